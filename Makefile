@@ -1,0 +1,31 @@
+# The two set-up commands of the README:
+#   make demo   install dependencies, build (Release), run the showcase job
+#   make test   install dependencies, build, run every test
+MAKEFLAGS += --no-print-directory
+BUILD ?= build
+JOBS ?= $(shell nproc)
+PDS = $(BUILD)/apps/pds/pds
+DEMO_DIR ?= out/demo
+
+.PHONY: all deps build demo test bench clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	@bash scripts/demo.sh $(PDS) $(DEMO_DIR)
+
+test: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	@$(BUILD)/bench/pds_bench
+
+clean:
+	rm -rf $(BUILD) out

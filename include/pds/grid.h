@@ -1,0 +1,176 @@
+#pragma once
+// A uniform background grid over a Domain for neighbour queries within a
+// radius, on boxes and tori.
+//
+// Cells have edge at most radius/sqrt(D) (their diagonal is at most the
+// radius), so in a set whose points are at least `radius` apart each cell holds
+// at most one point. Any number of points per cell is still handled (a linked
+// list through the points), so the grid also serves arbitrary point sets.
+// The cell count per axis is a whole number that divides the extent exactly,
+// which makes the cells line up across a torus's seam.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "pds/domain.h"
+#include "pds/error.h"
+#include "pds/point.h"
+
+namespace pds {
+
+/// The most cells a Grid allocates (4 bytes each): 1 GiB.
+inline constexpr std::size_t kMaxGridCells = std::size_t{1} << 28;
+
+template <int D>
+class Grid {
+ public:
+  /// A grid whose cells have edge at most `max_cell_edge` along every axis.
+  /// Throws InvalidArgument if the edge is not positive and finite or if more
+  /// than `max_cells` cells would be needed.
+  Grid(const Domain<D>& domain, double max_cell_edge, std::size_t max_cells = kMaxGridCells)
+      : domain_(domain) {
+    if (!(max_cell_edge > 0.0) || !std::isfinite(max_cell_edge))
+      throw InvalidArgument("grid: cell edge must be positive and finite, got " + std::to_string(max_cell_edge));
+    double total = 1.0;
+    for (int i = 0; i < D; ++i) {
+      const double n = std::max(1.0, std::ceil(domain.extent(i) / max_cell_edge));
+      total *= n;
+      if (total > static_cast<double>(max_cells))
+        throw InvalidArgument("grid: cell edge " + std::to_string(max_cell_edge) +
+                              " is too small for the domain: the neighbour grid would need more than " +
+                              std::to_string(max_cells) + " cells");
+      cells_[i] = static_cast<int>(n);
+      edge_[i] = domain.extent(i) / n;
+      inv_edge_[i] = n / domain.extent(i);
+    }
+    std::size_t stride = 1;
+    for (int i = 0; i < D; ++i) {
+      stride_[i] = stride;
+      stride *= static_cast<std::size_t>(cells_[i]);
+    }
+    head_.assign(stride, -1);
+    for (int i = 0; i < D; ++i)
+      extent_scale_ = std::max({extent_scale_, std::abs(domain.lo[i]), std::abs(domain.hi[i])});
+  }
+
+  /// The grid for points at least `radius` apart: cell edge radius/sqrt(D).
+  static Grid for_radius(const Domain<D>& domain, double radius, std::size_t max_cells = kMaxGridCells) {
+    return Grid(domain, radius / std::sqrt(static_cast<double>(D)), max_cells);
+  }
+
+  const Domain<D>& domain() const { return domain_; }
+  const PointSet<D>& points() const { return points_; }
+  std::size_t size() const { return points_.size(); }
+  std::size_t cell_count() const { return head_.size(); }
+  int cells(int axis) const { return cells_[axis]; }
+  double cell_edge(int axis) const { return edge_[axis]; }
+
+  /// Cell coordinate of x along one axis, clamped into the grid.
+  int cell_coord(double x, int axis) const {
+    const double c = std::floor((x - domain_.lo[axis]) * inv_edge_[axis]);
+    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells_[axis] - 1)));
+  }
+
+  std::size_t cell_of(const Point<D>& p) const {
+    std::size_t c = 0;
+    for (int i = 0; i < D; ++i) c += static_cast<std::size_t>(cell_coord(p[i], i)) * stride_[i];
+    return c;
+  }
+
+  /// Stores p (which must lie in the domain) and returns its index.
+  std::int32_t insert(const Point<D>& p) {
+    if (points_.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+      throw InvalidArgument("grid: more than 2^31 - 1 points");
+    const auto index = static_cast<std::int32_t>(points_.size());
+    const std::size_t c = cell_of(p);
+    points_.push_back(p);
+    next_.push_back(head_[c]);
+    head_[c] = index;
+    return index;
+  }
+
+  /// Calls f(index, distance2) for every stored point q with
+  /// distance(p, q) <= r; f returns false to stop early. Returns false if
+  /// stopped.
+  template <class F>
+  bool for_each_within(const Point<D>& p, double r, F&& f) const {
+    const double r2 = r * r;
+    return for_each_cell_near(p, r, [&](std::size_t cell) {
+      for (std::int32_t i = head_[cell]; i >= 0; i = next_[static_cast<std::size_t>(i)]) {
+        const double d2 = domain_.distance2(p, points_[static_cast<std::size_t>(i)]);
+        if (d2 <= r2 && !f(i, d2)) return false;
+      }
+      return true;
+    });
+  }
+
+  /// True if some stored point lies strictly closer than r to p.
+  bool any_closer_than(const Point<D>& p, double r) const {
+    const double r2 = r * r;
+    return !for_each_cell_near(p, r, [&](std::size_t cell) {
+      for (std::int32_t i = head_[cell]; i >= 0; i = next_[static_cast<std::size_t>(i)])
+        if (domain_.distance2(p, points_[static_cast<std::size_t>(i)]) < r2) return false;
+      return true;
+    });
+  }
+
+  /// Calls f(cell) for every cell that may hold a point within distance r of
+  /// p, each cell once; f returns false to stop. Returns false if stopped.
+  template <class F>
+  bool for_each_cell_near(const Point<D>& p, double r, F&& f) const {
+    // A small widening keeps a point at distance exactly r inside the range
+    // despite the rounding of the cell arithmetic; extra cells cost nothing.
+    r = r * (1.0 + 1e-12) + 1e-12 * extent_scale_;
+    std::array<int, D> first, count;
+    for (int i = 0; i < D; ++i) {
+      const double x = p[i] - domain_.lo[i];
+      int a = static_cast<int>(std::floor((x - r) * inv_edge_[i]));
+      int b = static_cast<int>(std::floor((x + r) * inv_edge_[i]));
+      if (domain_.periodic) {
+        if (b - a + 1 >= cells_[i]) {
+          a = 0;
+          b = cells_[i] - 1;
+        }
+      } else {
+        a = std::max(a, 0);
+        b = std::min(b, cells_[i] - 1);
+        if (a > b) return true;
+      }
+      first[i] = a;
+      count[i] = b - a + 1;
+    }
+    std::array<int, D> offset{};
+    while (true) {
+      std::size_t cell = 0;
+      for (int i = 0; i < D; ++i) {
+        int c = first[i] + offset[i];
+        if (c < 0)
+          c += cells_[i];
+        else if (c >= cells_[i])
+          c -= cells_[i];
+        cell += static_cast<std::size_t>(c) * stride_[i];
+      }
+      if (!f(cell)) return false;
+      int axis = 0;
+      while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
+      if (axis == D) return true;
+    }
+  }
+
+ private:
+  Domain<D> domain_;
+  std::array<int, D> cells_{};
+  std::array<double, D> edge_{};
+  std::array<double, D> inv_edge_{};
+  std::array<std::size_t, D> stride_{};
+  double extent_scale_ = 0.0;
+  std::vector<std::int32_t> head_;
+  std::vector<std::int32_t> next_;
+  PointSet<D> points_;
+};
+
+}  // namespace pds

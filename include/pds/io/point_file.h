@@ -1,0 +1,42 @@
+#pragma once
+// Point files: CSV and NumPy .npy, read and written, the format chosen by the
+// file's extension. "-" is standard input/output, as CSV.
+//
+// CSV: a header naming the coordinates (`x,y` or `x,y,z`), then one point a
+// line, each number written in the shortest form that reads back to the same
+// double (so a round trip is bit-exact). Reading accepts any header names,
+// `#` comment lines (as numpy.savetxt writes) and a file without a header.
+//
+// NPY: format 1.0 (2.0/3.0 read too), a C-ordered (N, D) array of
+// little-endian float64 ('<f8', the default) or float32 ('<f4'); Fortran
+// order and big-endian arrays are read too. Writing float32 rounds each
+// coordinate to the nearest float, which can move two points at the minimum
+// distance a little closer: use float64 where the distance must hold exactly.
+//
+// Errors name the file and, for CSV, the line. Writing goes to a temporary
+// file beside the target that is renamed over it only when complete, so a
+// failure never leaves a half-written file.
+
+#include <iosfwd>
+#include <string>
+
+#include "pds/point.h"
+
+namespace pds {
+
+enum class NpyType { Float64, Float32 };
+
+/// Reads a .csv or .npy file, or CSV from standard input for "-".
+PointCloud read_points(const std::string& path);
+
+/// Writes a .csv or .npy file (atomically), or CSV to standard output for "-".
+/// `npy_type` applies to .npy only.
+void write_points(const std::string& path, const PointCloud& points, NpyType npy_type = NpyType::Float64);
+
+/// Stream forms; `name` is used in error messages.
+PointCloud read_csv(std::istream& in, const std::string& name);
+void write_csv(std::ostream& out, const PointCloud& points);
+PointCloud read_npy(std::istream& in, const std::string& name);
+void write_npy(std::ostream& out, const PointCloud& points, NpyType type = NpyType::Float64);
+
+}  // namespace pds

@@ -1,0 +1,41 @@
+#pragma once
+// Checks shared by every entry point that takes a count, a radius or a
+// domain, so that each bad input gets the same clear message.
+
+#include <cstdint>
+#include <string>
+
+#include "pds/domain.h"
+
+namespace pds {
+
+/// Default cap on the number of points one request may produce (--max-points).
+/// 10^8 points in 3D take 2.4 GB as doubles.
+inline constexpr std::uint64_t kDefaultMaxPoints = 100'000'000;
+
+/// Throws InvalidArgument unless r is positive and finite.
+void require_radius(double r, const char* name = "radius");
+
+/// Throws InvalidArgument unless 1 <= n <= max_points.
+void require_count(std::uint64_t n, std::uint64_t max_points);
+
+/// Throws InvalidArgument if `points` points in dimension `dim` exceed
+/// max_points or would need more memory than this machine has. `what` says
+/// where the estimate came from, for the message.
+void require_point_budget(double points, int dim, std::uint64_t max_points, const std::string& what);
+
+/// The most points a set with minimum distance r can hold in a region of the
+/// given volume (densest packing of disks/balls of radius r/2; a box may hold
+/// a few more along its faces). Used to estimate the size of radius-driven
+/// requests before any memory is committed.
+double packing_count(double volume, double r, int dim);
+
+/// Checks r and that the densest packing at r fits the point budget.
+template <int D>
+void require_radius_budget(const Domain<D>& domain, double r, std::uint64_t max_points) {
+  require_radius(r);
+  require_point_budget(packing_count(domain.volume(), r, D), D, max_points,
+                       "radius " + std::to_string(r) + " over a domain of volume " + std::to_string(domain.volume()));
+}
+
+}  // namespace pds

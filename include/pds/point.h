@@ -1,0 +1,72 @@
+#pragma once
+// Points in D dimensions and sets of them.
+//
+// Point<D> is a plain std::array so that a PointSet<D> is one contiguous block
+// of D*N doubles, cheap to copy to files and to other libraries.
+
+#include <array>
+#include <cstddef>
+#include <ostream>
+#include <vector>
+
+namespace pds {
+
+/// Dimensions the registry, the command line and the file formats accept. The
+/// templates are written for any D; these are the ones instantiated.
+inline constexpr int kMinDim = 2;
+inline constexpr int kMaxDim = 3;
+
+/// A point is a std::array of its coordinates; the derived type lets
+/// templates deduce D (std::array's size is a size_t).
+template <int D>
+struct Point : std::array<double, D> {
+  static constexpr int dim = D;
+};
+
+template <int D>
+using PointSet = std::vector<Point<D>>;
+
+template <int D>
+std::ostream& operator<<(std::ostream& os, const Point<D>& p) {
+  os << '(';
+  for (int i = 0; i < D; ++i) os << (i ? ", " : "") << p[i];
+  return os << ')';
+}
+
+/// A point set whose dimension is known only at run time: what files hold and
+/// what the registry returns. Coordinates are stored point after point.
+struct PointCloud {
+  int dim = 2;
+  std::vector<double> coords;
+
+  std::size_t size() const { return dim > 0 ? coords.size() / static_cast<std::size_t>(dim) : 0; }
+  const double* point(std::size_t i) const { return coords.data() + i * static_cast<std::size_t>(dim); }
+
+  template <int D>
+  static PointCloud from(const PointSet<D>& points) {
+    PointCloud cloud{D, {}};
+    cloud.coords.reserve(points.size() * D);
+    for (const auto& p : points) cloud.coords.insert(cloud.coords.end(), p.begin(), p.end());
+    return cloud;
+  }
+
+  /// The points as a typed set; requires dim == D.
+  template <int D>
+  PointSet<D> as() const {
+    PointSet<D> points(size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+      for (int k = 0; k < D; ++k) points[i][k] = coords[i * D + k];
+    return points;
+  }
+
+  bool operator==(const PointCloud&) const = default;
+};
+
+/// Calls f(std::integral_constant<int, D>{}) for the run-time dimension dim.
+/// Throws InvalidArgument (via the caller's check) for unsupported ones.
+template <class F>
+decltype(auto) visit_dim(int dim, F&& f);
+
+}  // namespace pds
+
+#include "pds/detail/visit_dim.h"

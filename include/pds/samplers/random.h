@@ -1,0 +1,34 @@
+#pragma once
+// Uniform random points: white noise, the slides' "Poisson" pattern.
+
+#include <cstdint>
+
+#include "pds/domain.h"
+#include "pds/point.h"
+#include "pds/registry.h"
+#include "pds/rng.h"
+
+namespace pds {
+
+struct WhiteNoiseParams {
+  std::uint64_t count = 1024;  // number of points, >= 1
+};
+
+/// `count` points drawn independently and uniformly from the domain.
+/// Guarantees: every point in [lo, hi); exactly `count` points; same seed,
+/// same points. No minimum distance: points cluster and leave holes.
+/// Invalid: count 0 or above the point cap (checked by generate()).
+template <int D>
+PointSet<D> white_noise(const WhiteNoiseParams& params, const Domain<D>& domain, std::uint64_t seed);
+
+/// A point drawn uniformly from the domain.
+template <int D>
+Point<D> uniform_point(Rng& rng, const Domain<D>& domain) {
+  Point<D> p;
+  for (int i = 0; i < D; ++i) p[i] = rng.uniform(domain.lo[i], domain.hi[i]);
+  return p;
+}
+
+const Method& white_noise_method();
+
+}  // namespace pds

@@ -1,0 +1,92 @@
+#include "pds/registry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "pds/error.h"
+#include "pds/samplers/jittered.h"
+#include "pds/samplers/random.h"
+#include "pds/samplers/regular.h"
+
+namespace pds {
+
+std::span<const Method> methods() {
+  // The one table of methods: one line each.
+  static const std::vector<Method> table = {
+      white_noise_method(),
+      regular_method(),
+      jittered_method(),
+  };
+  return table;
+}
+
+const Method& find_method(const std::string& name) {
+  for (const Method& m : methods())
+    if (m.name == name) return m;
+  std::string known;
+  for (const Method& m : methods()) known += (known.empty() ? "" : ", ") + m.name;
+  throw InvalidArgument("unknown method '" + name + "' (known: " + known + ")");
+}
+
+double GenerateRequest::param(const std::string& name, double fallback) const {
+  const auto it = params.find(name);
+  return it == params.end() ? fallback : it->second;
+}
+
+namespace {
+
+std::string format(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+void validate(const Method& m, const GenerateRequest& r) {
+  if (std::find(m.dims.begin(), m.dims.end(), r.dim) == m.dims.end()) {
+    std::string dims;
+    for (int d : m.dims) dims += (dims.empty() ? "" : ", ") + std::to_string(d);
+    throw InvalidArgument(m.name + ": dimension " + std::to_string(r.dim) + " is not supported (supported: " + dims +
+                          ")");
+  }
+  visit_dim(r.dim, [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const Domain<D> domain = r.domain<D>();  // validates the bounds
+    if (r.radius) {
+      if (!m.takes_radius) throw InvalidArgument(m.name + " does not take --radius (use --count)");
+      require_radius_budget(domain, *r.radius, r.max_points);
+    }
+    return 0;
+  });
+  if (r.count) {
+    if (!m.takes_count) throw InvalidArgument(m.name + " does not take --count (use --radius)");
+    require_count(*r.count, r.max_points);
+  }
+  if (!r.count && !r.radius) {
+    if (m.takes_count && m.takes_radius) throw InvalidArgument(m.name + " needs --count or --radius");
+    throw InvalidArgument(m.name + (m.takes_count ? " needs --count" : " needs --radius"));
+  }
+  if (r.threads < 0) throw InvalidArgument("threads must be 0 (all) or positive, got " + std::to_string(r.threads));
+  for (const auto& [name, value] : r.params) {
+    const auto it = std::find_if(m.params.begin(), m.params.end(), [&](const MethodParam& p) { return p.name == name; });
+    if (it == m.params.end()) {
+      std::string known;
+      for (const MethodParam& p : m.params) known += (known.empty() ? "" : ", ") + p.name;
+      throw InvalidArgument(m.name + " has no parameter '" + name + "' (" +
+                            (known.empty() ? std::string("it takes none") : "known: " + known) + ")");
+    }
+    if (!std::isfinite(value) || value < it->min || value > it->max || (it->integer && value != std::floor(value)))
+      throw InvalidArgument(m.name + ": parameter " + name + " must be " + (it->integer ? "an integer " : "") +
+                            "in [" + format(it->min) + ", " + format(it->max) + "], got " + format(value));
+  }
+}
+
+}  // namespace
+
+PointCloud generate(const std::string& method, const GenerateRequest& request) {
+  const Method& m = find_method(method);
+  validate(m, request);
+  return m.run(request);
+}
+
+}  // namespace pds

@@ -1,0 +1,57 @@
+#include "pds/samplers/jittered.h"
+
+#include <string>
+
+#include "pds/error.h"
+#include "pds/rng.h"
+#include "pds/samplers/strata.h"
+
+namespace pds {
+
+template <int D>
+PointSet<D> jittered(const JitteredParams& params, const Domain<D>& domain, std::uint64_t seed) {
+  std::size_t total = 1;
+  for (int i = 0; i < D; ++i) {
+    if (params.cells[i] < 1)
+      throw InvalidArgument("jittered: strata along axis " + std::to_string(i) + " must be at least 1, got " +
+                            std::to_string(params.cells[i]));
+    total *= static_cast<std::size_t>(params.cells[i]);
+  }
+  Rng rng(seed);
+  PointSet<D> points(total);
+  std::array<int, D> index{};
+  for (auto& p : points) {
+    for (int i = 0; i < D; ++i) {
+      const double edge = domain.extent(i) / params.cells[i];
+      const double lo = domain.lo[i] + index[i] * edge;
+      // The last stratum ends exactly at hi, whatever the rounding of lo + edge.
+      const double hi = index[i] + 1 == params.cells[i] ? domain.hi[i] : domain.lo[i] + (index[i] + 1) * edge;
+      p[i] = rng.uniform(lo, hi);
+    }
+    for (int i = 0; i < D && ++index[i] == params.cells[i]; ++i) index[i] = 0;
+  }
+  return points;
+}
+
+template PointSet<2> jittered<2>(const JitteredParams&, const Domain<2>&, std::uint64_t);
+template PointSet<3> jittered<3>(const JitteredParams&, const Domain<3>&, std::uint64_t);
+
+const Method& jittered_method() {
+  static const Method method{
+      .name = "jittered",
+      .summary = "uniform jitter: one uniform point in each cell of a grid of --count near-cubic strata",
+      .citation = "R. L. Cook, Stochastic sampling in computer graphics, ACM TOG 5(1), 1986",
+      .takes_count = true,
+      .run = [](const GenerateRequest& r) {
+        return run_typed(r, [&](const auto& domain) {
+          const auto cells = strata_for_count(domain, *r.count);
+          JitteredParams params;
+          std::copy(cells.begin(), cells.end(), params.cells.begin());
+          return jittered(params, domain, r.seed);
+        });
+      },
+  };
+  return method;
+}
+
+}  // namespace pds

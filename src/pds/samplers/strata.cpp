@@ -1,0 +1,114 @@
+#include "pds/samplers/strata.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "pds/error.h"
+
+namespace pds {
+namespace {
+
+// Calls f(cells) for every way of writing n as a product of D positive
+// factors, in axis order.
+template <int D, class F>
+void for_each_factorisation(std::uint64_t n, std::array<int, D>& cells, int axis, F&& f) {
+  if (axis == D - 1) {
+    if (n > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) return;
+    cells[axis] = static_cast<int>(n);
+    f(cells);
+    return;
+  }
+  auto visit = [&](std::uint64_t factor) {
+    if (factor > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) return;
+    cells[axis] = static_cast<int>(factor);
+    for_each_factorisation<D>(n / factor, cells, axis + 1, f);
+  };
+  for (std::uint64_t a = 1; a * a <= n; ++a) {
+    if (n % a) continue;
+    visit(a);
+    if (n / a != a) visit(n / a);
+  }
+}
+
+template <int D>
+std::array<int, D> best_split(const Domain<D>& domain, std::uint64_t count, double& aspect) {
+  std::array<int, D> cells{}, best{};
+  aspect = std::numeric_limits<double>::infinity();
+  for_each_factorisation<D>(count, cells, 0, [&](const std::array<int, D>& c) {
+    const double a = strata_aspect<D>(domain, c);
+    if (a < aspect) {
+      aspect = a;
+      best = c;
+    }
+  });
+  return best;
+}
+
+template <int D>
+bool splits_well(const Domain<D>& domain, std::uint64_t count) {
+  double aspect;
+  best_split<D>(domain, count, aspect);
+  return aspect <= kMaxStratumAspect;
+}
+
+}  // namespace
+
+template <int D>
+double strata_aspect(const Domain<D>& domain, const std::array<int, D>& cells) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (int i = 0; i < D; ++i) {
+    const double edge = domain.extent(i) / cells[i];
+    lo = std::min(lo, edge);
+    hi = std::max(hi, edge);
+  }
+  return hi / lo;
+}
+
+template <int D>
+std::array<int, D> strata_for_count(const Domain<D>& domain, std::uint64_t count) {
+  double aspect;
+  const std::array<int, D> best = best_split(domain, count, aspect);
+  if (aspect <= kMaxStratumAspect) return best;
+
+  // Say which counts would work; they are dense near any count, so a short
+  // bounded search finds them.
+  std::string below = "none", above = "none";
+  for (std::uint64_t k = count - 1; k >= 1 && count - k <= 100000; --k)
+    if (splits_well(domain, k)) {
+      below = std::to_string(k);
+      break;
+    }
+  for (std::uint64_t k = count + 1; k - count <= 100000; ++k)
+    if (splits_well(domain, k)) {
+      above = std::to_string(k);
+      break;
+    }
+  throw InvalidArgument("count " + std::to_string(count) +
+                        " cannot be split into a grid of near-cubic strata over this domain (best cell aspect " +
+                        std::to_string(aspect) + ", limit " + std::to_string(kMaxStratumAspect) +
+                        "); nearest counts that can: " + below + " and " + above);
+}
+
+template <int D>
+std::array<int, D> strata_for_spacing(const Domain<D>& domain, double spacing) {
+  std::array<int, D> cells{};
+  for (int i = 0; i < D; ++i) {
+    const double n = std::floor(domain.extent(i) / spacing);
+    if (n > static_cast<double>(std::numeric_limits<int>::max()))
+      throw InvalidArgument("spacing " + std::to_string(spacing) + " is too small for the domain");
+    cells[i] = std::max(1, static_cast<int>(n));
+  }
+  return cells;
+}
+
+#define PDS_INSTANTIATE(D)                                                                  \
+  template std::array<int, D> strata_for_count<D>(const Domain<D>&, std::uint64_t);        \
+  template std::array<int, D> strata_for_spacing<D>(const Domain<D>&, double);             \
+  template double strata_aspect<D>(const Domain<D>&, const std::array<int, D>&);
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+#undef PDS_INSTANTIATE
+
+}  // namespace pds
