@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "pds/error.h"
+#include "pds/samplers/bridson.h"
 #include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/random.h"
@@ -19,6 +20,7 @@ std::span<const Method> methods() {
       regular_method(),
       jittered_method(),
       dart_throwing_method(),
+      bridson_method(),
   };
   return table;
 }
