@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "pds/error.h"
+#include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/regular.h"
@@ -17,6 +18,7 @@ std::span<const Method> methods() {
       white_noise_method(),
       regular_method(),
       jittered_method(),
+      dart_throwing_method(),
   };
   return table;
 }
