@@ -111,7 +111,7 @@ struct Series {
 /// A line chart with labelled axes in `area` (which includes the margins).
 void chart(cairo_t* cr, Rect area, double x0, double x1, double y0, double y1, const std::vector<Series>& series,
            const std::string& x_label, const std::string& y_label, const std::string& title) {
-  const double font = std::clamp(area.h * 0.045, 9.0, 16.0);
+  const double font = std::clamp(std::min(area.h, area.w) * 0.04, 9.0, 16.0);
   const Rect plot{area.x + 4.2 * font, area.y + (title.empty() ? 1.0 : 2.2) * font, area.w - 5.2 * font,
                   area.h - (title.empty() ? 4.0 : 5.2) * font};
   auto px = [&](double x) { return plot.x + (x - x0) / (x1 - x0) * plot.w; };
@@ -242,11 +242,12 @@ double top_of(const std::vector<double>& y, double floor_value, double cap) {
 
 double range_end(const std::vector<double>& x) { return x.empty() ? 1.0 : x.back(); }
 
-void radial_power_panel(cairo_t* cr, Rect area, const RadialSpectrum& r, const std::string& title) {
+void radial_power_panel(cairo_t* cr, Rect area, const RadialSpectrum& r, const std::string& title,
+                        const std::string& x_label = "frequency (1 / mean inter-point distance)") {
   const double x1 = range_end(r.frequency);
   chart(cr, area, 0, x1, 0, top_of(r.power, 2.0, 8.0),
-        {{{0, x1}, {1, 1}, 0.5, 0.5, 0.5, true}, {r.frequency, r.power, 0.1, 0.2, 0.7}},
-        "frequency (1 / mean inter-point distance)", "radial power", title);
+        {{{0, x1}, {1, 1}, 0.5, 0.5, 0.5, true}, {r.frequency, r.power, 0.1, 0.2, 0.7}}, x_label, "radial power",
+        title);
 }
 
 void anisotropy_panel(cairo_t* cr, Rect area, const RadialSpectrum& r) {
@@ -343,7 +344,7 @@ void plot_comparison(std::span<const ComparisonRow> rows, const std::string& pat
     text(cr, caption, gap, y + 19, 14, 0.0, 0.0, true);
     points_panel(cr, {gap, y + label, p, p}, row.points, row.domain, 0);
     spectrum_panel(cr, {2 * gap + p, y + label, p, p}, row.spectrum, SpectrumScale::Log);
-    radial_power_panel(cr, {3 * gap + 2 * p, y + label, p, p}, row.radial, "");
+    radial_power_panel(cr, {3 * gap + 2 * p, y + label, p, p}, row.radial, "", "frequency (1 / mean spacing)");
   }
   canvas.finish();
 }
