@@ -37,7 +37,11 @@ class Canvas {
       case ImageFormat::Svg: surface_ = cairo_svg_surface_create(path.c_str(), width, height); break;
       case ImageFormat::Pdf: surface_ = cairo_pdf_surface_create(path.c_str(), width, height); break;
     }
-    check(cairo_surface_status(surface_));
+    if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS) {
+      const cairo_status_t status = cairo_surface_status(surface_);
+      cairo_surface_destroy(surface_);
+      check(status);
+    }
     cr_ = cairo_create(surface_);
     cairo_set_source_rgb(cr_, 1, 1, 1);
     cairo_paint(cr_);
