@@ -146,7 +146,7 @@ Json analyze(const std::vector<PointSet<D>>& sets, const Domain<D>& domain, std:
   // Fourier view.
   const int K = opt.max_frequency > 0 ? opt.max_frequency : (D == 2 ? 128 : 32);
   const double work = static_cast<double>(total) * std::pow(2.0 * K + 1.0, D) / 2.0;
-  const bool wanted = !opt.spectrum.empty() || !opt.radial.empty();
+  const bool wanted = !opt.spectrum.empty() || !opt.radial.empty() || opt.max_frequency > 0;
   if (!opt.spectrum.empty() && D != 2) throw InvalidArgument("--spectrum: pictures of the spectrum are 2D only");
   if (smallest > 0 && (wanted || work <= kDefaultSpectrumWork)) {
     const Periodogram p = periodogram<D>(sets, domain, {.max_frequency = K});
@@ -178,6 +178,9 @@ Json analyze(const std::vector<PointSet<D>>& sets, const Domain<D>& domain, std:
                         {&r.frequency, &r.power, &r.anisotropy_db});
   } else {
     out["spectrum"] = nullptr;
+    if (smallest > 0)
+      out["spectrum_note"] = "skipped: more than " + std::to_string(static_cast<long long>(kDefaultSpectrumWork)) +
+                             " point-frequency products; ask with --frequencies, --spectrum or --radial";
   }
 
   // Pair correlation.
