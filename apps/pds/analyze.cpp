@@ -83,7 +83,8 @@ Json first_set_fields(const PointSet<D>& points, const Domain<D>& domain, std::o
   if (std::isfinite(m.distance)) out["min_distance_pair"] = {m.i, m.j};
   out["mean_nn_distance"] = number_or_null(points.size() > 1 ? sum / points.size() : NAN);
   out["relative_radius"] = relative_radius(m.distance, domain.volume(), points.size(), D);
-  out["max_packing_radius"] = points.empty() ? Json(nullptr) : Json(max_packing_radius(domain.volume(), points.size(), D));
+  out["max_packing_radius"] =
+      points.empty() ? Json(nullptr) : Json(max_packing_radius(domain.volume(), points.size(), D));
   if (radius) {
     out["radius"] = *radius;
     out["min_distance_holds"] = !(m.distance < *radius);
@@ -185,15 +186,11 @@ Json analyze(const std::vector<PointSet<D>>& sets, const Domain<D>& domain, std:
 
   // Pair correlation.
   if (smallest > 1) {
-    const PairCorrelation g =
-        pair_correlation<D>(sets, domain, {.r_max = opt.pcf_max, .bandwidth = opt.pcf_bandwidth});
+    const PairCorrelation g = pair_correlation<D>(sets, domain, {.r_max = opt.pcf_max, .bandwidth = opt.pcf_bandwidth});
     std::size_t peak = 0;
     for (std::size_t i = 0; i < g.g.size(); ++i)
       if (g.g[i] > g.g[peak]) peak = i;
-    out["pcf"] = {{"bandwidth", g.bandwidth},
-                  {"r_max", g.r.back()},
-                  {"peak_r", g.r[peak]},
-                  {"peak_g", g.g[peak]}};
+    out["pcf"] = {{"bandwidth", g.bandwidth}, {"r_max", g.r.back()}, {"peak_r", g.r[peak]}, {"peak_g", g.g[peak]}};
     if (is_picture(opt.pcf))
       plot_pair_correlation(g, opt.pcf, {.title = "pair correlation function"});
     else if (!opt.pcf.empty())
@@ -223,7 +220,8 @@ void add_analyze(CLI::App& app) {
   auto* radius = cmd->add_option("--radius,-r", opt->radius,
                                  "Minimum distance to check (and, with --method, to generate with); also reports "
                                  "maximality at this radius");
-  auto* method = cmd->add_option("--method,-m", opt->method, "Generate the sets with this method instead of reading files");
+  auto* method =
+      cmd->add_option("--method,-m", opt->method, "Generate the sets with this method instead of reading files");
   cmd->add_option("--sets,-M", opt->sets, "With --method: number of realisations (seeds SEED, SEED+1, ...)")
       ->capture_default_str();
   auto* count = cmd->add_option("--count,-n", opt->count, "With --method: points per set");
@@ -239,7 +237,8 @@ void add_analyze(CLI::App& app) {
   cmd->add_option("--pcf-max", opt->pcf_max, "Largest PCF distance (default 2.5 mean inter-point distances)");
   cmd->add_option("--disk-radius", opt->disk_radius, "--plot also draws disks of this radius around the points");
   cmd->add_option("--spectrum", opt->spectrum, "Write the averaged periodogram image (.png, .svg, .pdf)");
-  cmd->add_option("--radial", opt->radial, "Write the radial spectrum: CSV (frequency,power,anisotropy_db), or a plot for .png/.svg/.pdf");
+  cmd->add_option("--radial", opt->radial,
+                  "Write the radial spectrum: CSV (frequency,power,anisotropy_db), or a plot for .png/.svg/.pdf");
   cmd->add_option("--pcf", opt->pcf, "Write the pair correlation function: CSV (r,g), or a plot for .png/.svg/.pdf");
   cmd->add_option("--plot", opt->plot, "Write a picture of the (first) point set (.png, .svg, .pdf)");
   cmd->callback([opt, radius, method, count, cmd] {
@@ -272,8 +271,8 @@ void add_analyze(CLI::App& app) {
       out["method"] = opt->method;
       out["seed"] = opt->seed;
     } else {
-      if (cmd->get_option("--sets")->count() || count->count() || !opt->params.empty() || cmd->get_option("--dim")->count() ||
-          cmd->get_option("--seed")->count())
+      if (cmd->get_option("--sets")->count() || count->count() || !opt->params.empty() ||
+          cmd->get_option("--dim")->count() || cmd->get_option("--seed")->count())
         throw InvalidArgument("--sets, --count, --seed, --dim and --param apply to --method only");
       int stdin_uses = 0;
       for (const std::string& f : opt->files) stdin_uses += f == "-";

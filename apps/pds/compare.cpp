@@ -28,8 +28,8 @@ struct CompareOptions {
 /// The default rows: those of these methods that the registry holds, in this
 /// order (white noise, stratified, then the Poisson disk family).
 std::vector<std::string> default_methods() {
-  const char* preferred[] = {"random",    "jittered",          "dart-throwing", "bridson", "best-candidate",
-                             "dunbar-humphreys", "wei", "jones"};
+  const char* preferred[] = {"random",         "jittered",         "dart-throwing", "bridson",
+                             "best-candidate", "dunbar-humphreys", "wei",           "jones"};
   std::vector<std::string> out;
   for (const char* name : preferred)
     for (const Method& m : methods())

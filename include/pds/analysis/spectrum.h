@@ -44,9 +44,9 @@ struct PeriodogramOptions {
 /// The averaged periodogram on the integer frequency cube [-K, K]^D.
 struct Periodogram {
   int dim = 2;
-  int max_frequency = 0;     // K
-  std::size_t sets = 0;      // M, the number of sets averaged
-  double mean_count = 0;     // mean N over the sets
+  int max_frequency = 0;       // K
+  std::size_t sets = 0;        // M, the number of sets averaged
+  double mean_count = 0;       // mean N over the sets
   std::vector<double> extent;  // domain extent per axis (frequency k_i is k_i / extent_i cycles per unit)
   /// P averaged over the sets; axis 0 varies fastest, index (k_i + K).
   std::vector<double> power;

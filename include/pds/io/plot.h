@@ -30,9 +30,9 @@ enum class ImageFormat { Png, Svg, Pdf };
 ImageFormat image_format_for(const std::string& path);
 
 struct PointPlotOptions {
-  int size = 800;           // longer side of the picture, 64..8192
-  double disk_radius = 0;   // > 0: also draw a disk of this radius (domain units) around each point
-  std::string title;        // drawn above the points when not empty
+  int size = 800;          // longer side of the picture, 64..8192
+  double disk_radius = 0;  // > 0: also draw a disk of this radius (domain units) around each point
+  std::string title;       // drawn above the points when not empty
 };
 
 /// The points of a 2D set as dots in the domain's frame (y up).
@@ -65,7 +65,7 @@ struct ComparisonRow {
   std::string name;
   PointSet<2> points;  // one realisation, drawn as the spatial view
   Domain<2> domain;
-  Periodogram spectrum;    // averaged over the realisations
+  Periodogram spectrum;  // averaged over the realisations
   RadialSpectrum radial;
 };
 

@@ -72,8 +72,8 @@ template <int D>
 double star_discrepancy(const PointSet<D>& points, const Domain<D>& domain) {
   if (!star_discrepancy_feasible(points.size(), D))
     throw InvalidArgument("star discrepancy: exact evaluation needs (N+1)^D N <= " +
-                          std::to_string(static_cast<long long>(kMaxStarDiscrepancyWork)) + "; N = " +
-                          std::to_string(points.size()) + " in " + std::to_string(D) + "D is too many");
+                          std::to_string(static_cast<long long>(kMaxStarDiscrepancyWork)) +
+                          "; N = " + std::to_string(points.size()) + " in " + std::to_string(D) + "D is too many");
   const auto u = to_unit_cube(points, domain, "star discrepancy");
   const std::size_t n = u.size();
   // Candidate corner coordinates per axis: the points' coordinates and 1.

@@ -93,8 +93,7 @@ PairCorrelation pair_correlation(std::span<const PointSet<D>> sets, const Domain
         const double d = std::sqrt(d2);
         double w = 1.0;
         if (!domain.periodic)
-          for (int a = 0; a < D; ++a)
-            w *= domain.extent(a) / (domain.extent(a) - std::abs(set[j][a] - set[i][a]));
+          for (int a = 0; a < D; ++a) w *= domain.extent(a) / (domain.extent(a) - std::abs(set[j][a] - set[i][a]));
         // Only the r values within h of d carry kernel mass.
         const int lo = std::max(0, static_cast<int>(std::floor((d - h) / dr)) - 1);
         const int hi = std::min(steps - 1, static_cast<int>(std::ceil((d + h) / dr)));

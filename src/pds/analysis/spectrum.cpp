@@ -28,9 +28,9 @@
 namespace pds {
 namespace {
 
-constexpr int kAnchorEvery = 32;   // recompute cos/sin directly every this many steps: keeps rounding at ~1e-15
-constexpr int kPointBlock = 64;    // points whose exponential tables are held at once
-constexpr int kRowsPerChunk = 8;   // frequency rows per parallel task
+constexpr int kAnchorEvery = 32;  // recompute cos/sin directly every this many steps: keeps rounding at ~1e-15
+constexpr int kPointBlock = 64;   // points whose exponential tables are held at once
+constexpr int kRowsPerChunk = 8;  // frequency rows per parallel task
 
 /// e^{-2 pi i k u} for k = -K..K into re[k+K], im[k+K].
 void exponentials(double u, int K, double* re, double* im) {

@@ -33,9 +33,15 @@ class Canvas {
       throw InvalidArgument("picture size must be within 16..16384, got " + std::to_string(width) + " x " +
                             std::to_string(height));
     switch (format_) {
-      case ImageFormat::Png: surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height); break;
-      case ImageFormat::Svg: surface_ = cairo_svg_surface_create(path.c_str(), width, height); break;
-      case ImageFormat::Pdf: surface_ = cairo_pdf_surface_create(path.c_str(), width, height); break;
+      case ImageFormat::Png:
+        surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);
+        break;
+      case ImageFormat::Svg:
+        surface_ = cairo_svg_surface_create(path.c_str(), width, height);
+        break;
+      case ImageFormat::Pdf:
+        surface_ = cairo_pdf_surface_create(path.c_str(), width, height);
+        break;
     }
     if (cairo_surface_status(surface_) != CAIRO_STATUS_SUCCESS) {
       const cairo_status_t status = cairo_surface_status(surface_);
@@ -75,7 +81,8 @@ class Canvas {
 
 void text(cairo_t* cr, const std::string& s, double x, double y, double size, double align_x = 0.0,
           double align_y = 0.0, bool bold = false) {
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size);
   cairo_text_extents_t e;
   cairo_text_extents(cr, s.c_str(), &e);
@@ -289,8 +296,8 @@ void plot_points(const PointSet<2>& points, const Domain<2>& domain, const std::
   const int height = aspect <= 1 ? std::max(16, static_cast<int>(std::lround(size * aspect))) : size;
   const double title_height = options.title.empty() ? 0 : 28;
   const double margin = 8;
-  Canvas canvas(path, width + 2 * static_cast<int>(margin), height + 2 * static_cast<int>(margin) +
-                                                               static_cast<int>(title_height));
+  Canvas canvas(path, width + 2 * static_cast<int>(margin),
+                height + 2 * static_cast<int>(margin) + static_cast<int>(title_height));
   if (!options.title.empty()) {
     cairo_set_source_rgb(canvas.cr(), 0, 0, 0);
     text(canvas.cr(), options.title, margin + width / 2.0, margin + 18, 16, 0.5, 0.0, true);
