@@ -67,8 +67,8 @@ struct Periodogram {
 /// re-anchored every 32 steps), and the frequency rows are spread over
 /// threads; each frequency sums its points in order, so the result does not
 /// depend on the number of threads. Cost: N M (2K+1)^D / 2 complex
-/// multiply-adds. Throws InvalidArgument for no sets, an empty set or K out of
-/// range.
+/// multiply-adds. Throws InvalidArgument for no sets, an empty set, a point
+/// outside the domain or K out of range.
 template <int D>
 Periodogram periodogram(std::span<const PointSet<D>> sets, const Domain<D>& domain,
                         const PeriodogramOptions& options = {});

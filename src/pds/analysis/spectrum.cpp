@@ -163,6 +163,9 @@ Periodogram periodogram(std::span<const PointSet<D>> sets, const Domain<D>& doma
   double total = 0;
   for (std::size_t s = 0; s < sets.size(); ++s) {
     if (sets[s].empty()) throw InvalidArgument("periodogram: point set " + std::to_string(s) + " is empty");
+    for (const auto& p : sets[s])
+      if (!domain.contains(p))
+        throw InvalidArgument("periodogram: a point of set " + std::to_string(s) + " lies outside the domain");
     total += static_cast<double>(sets[s].size());
   }
   result.mean_count = total / static_cast<double>(sets.size());
