@@ -7,6 +7,7 @@
 #include <complex>
 #include <numbers>
 
+#include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
 #include "pds/registry.h"
 #include "pds/samplers/jittered.h"
@@ -158,14 +159,20 @@ TEST(Periodogram, BlueNoiseMethodsHaveLowPowerBelowTheRing) {
   const char* candidates[] = {"jittered", "dart-throwing", "bridson", "best-candidate"};
   int checked = 0;
   for (const char* name : candidates) {
-    bool registered = false;
-    for (const Method& method : methods()) registered = registered || method.name == name;
-    if (!registered) continue;
+    const Method* method = nullptr;
+    for (const Method& m : methods())
+      if (m.name == name) method = &m;
+    if (method == nullptr) continue;
     std::vector<PointSet<2>> sets;
     for (std::uint64_t s = 0; s < 4; ++s) {
       GenerateRequest request;
       request.torus = true;
-      request.count = 1024;
+      // About 1024 points: by count, or at the radius where a maximal set has
+      // that many (relative radius 0.75).
+      if (method->takes_count)
+        request.count = 1024;
+      else
+        request.radius = 2 * 0.75 * max_packing_radius(1.0, 1024, 2);
       request.seed = 900 + s;
       sets.push_back(generate(name, request).as<2>());
     }
