@@ -25,9 +25,14 @@ has() { grep -q -- "$2" "$1" || fail "$1 lacks $2"; }
 # One file: the foundation's fields plus the new measures.
 expect_exit 0 "$pds" analyze "$tmp/a.csv" --torus
 for key in '"count": 1024' '"min_distance"' '"relative_radius"' '"sets": 1' '"rho_min"' '"rho_mean"' \
-  '"l2_star_discrepancy"' '"star_discrepancy": null' '"low_frequency_power"' '"mean_anisotropy_db"' '"pcf"'; do
+  '"l2_star_discrepancy"' '"star_discrepancy": 0\.' '"low_frequency_power"' '"mean_anisotropy_db"' '"pcf"'; do
   has "$tmp/out" "$key"
 done
+
+# Beyond the exact star discrepancy's limit (about 10,000 points in 2D): null.
+"$pds" generate random --count 20000 -o "$tmp/big.npy"
+expect_exit 0 "$pds" analyze "$tmp/big.npy" --frequencies 8
+has "$tmp/out" '"star_discrepancy": null'
 
 # Several files are realisations; '-' reads standard input.
 expect_exit 0 "$pds" analyze "$tmp/a.csv" "$tmp/b.npy" --torus

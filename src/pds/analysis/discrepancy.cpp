@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,9 @@ std::vector<std::array<double, D>> to_unit_cube(const PointSet<D>& points, const
 }  // namespace
 
 bool star_discrepancy_feasible(std::size_t n, int dim) {
-  return n > 0 && std::pow(static_cast<double>(n) + 1.0, dim) * static_cast<double>(n) <= kMaxStarDiscrepancyWork;
+  const double m = static_cast<double>(n) + 1.0;
+  return n > 0 &&
+         2.0 * static_cast<double>(n) * std::pow(m, dim - 1) + 2.0 * std::pow(m, dim) <= kMaxStarDiscrepancyWork;
 }
 
 template <int D>
@@ -71,10 +74,10 @@ double l2_star_discrepancy(const PointSet<D>& points, const Domain<D>& domain) {
 template <int D>
 double star_discrepancy(const PointSet<D>& points, const Domain<D>& domain) {
   if (!star_discrepancy_feasible(points.size(), D))
-    throw InvalidArgument("star discrepancy: exact evaluation needs (N+1)^D N <= " +
+    throw InvalidArgument("star discrepancy: exact evaluation needs 2 N (N+1)^(D-1) + 2 (N+1)^D <= " +
                           std::to_string(static_cast<long long>(kMaxStarDiscrepancyWork)) +
                           "; N = " + std::to_string(points.size()) + " in " + std::to_string(D) + "D is too many");
-  const auto u = to_unit_cube(points, domain, "star discrepancy");
+  auto u = to_unit_cube(points, domain, "star discrepancy");
   const std::size_t n = u.size();
   // Candidate corner coordinates per axis: the points' coordinates and 1.
   std::array<std::vector<double>, D> grid;
@@ -84,40 +87,63 @@ double star_discrepancy(const PointSet<D>& points, const Domain<D>& domain) {
     std::sort(grid[a].begin(), grid[a].end());
     grid[a].erase(std::unique(grid[a].begin(), grid[a].end()), grid[a].end());
   }
-  // Corners are split over threads by their first axis; each chunk keeps its
-  // own maximum and the maxima are combined in order (max is exact anyway).
-  std::vector<double> best(grid[0].size(), 0.0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, grid[0].size()), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i0 = r.begin(); i0 != r.end(); ++i0) {
-      std::array<std::size_t, D> index{};
-      index[0] = i0;
-      double local = 0.0;
-      while (true) {
-        std::array<double, D> y;
-        double volume = 1.0;
-        for (int a = 0; a < D; ++a) {
-          y[a] = grid[a][index[a]];
-          volume *= y[a];
-        }
-        std::size_t open = 0, closed = 0;
-        for (const auto& p : u) {
-          bool in_open = true, in_closed = true;
-          for (int a = 0; a < D; ++a) {
-            in_open = in_open && p[a] < y[a];
-            in_closed = in_closed && p[a] <= y[a];
-          }
-          open += in_open;
-          closed += in_closed;
-        }
-        local = std::max({local, volume - static_cast<double>(open) / n, static_cast<double>(closed) / n - volume});
-        int a = 1;
-        while (a < D && ++index[a] == grid[a].size()) index[a++] = 0;
-        if (a == D) break;
-      }
-      best[i0] = local;
+  // Sweep along axis 0. For the corners y = (g, y_1..) at one g, `open`
+  // counts the points with u_0 < g and u_a < y_a on the other axes, `closed`
+  // those with u_0 <= g and u_a <= y_a; both are tables over the corners of
+  // the other axes, updated as the sweep passes each point.
+  std::sort(u.begin(), u.end(), [](const auto& p, const auto& q) { return p[0] < q[0]; });
+  std::array<std::size_t, D> stride{};
+  std::size_t cells = 1;
+  for (int a = 1; a < D; ++a) {
+    stride[a] = cells;
+    cells *= grid[a].size();
+  }
+  std::vector<std::uint32_t> open(cells, 0), closed(cells, 0);
+  // Adds a point to the corners y with y_a > u_a (strict) or y_a >= u_a.
+  auto add = [&](const std::array<double, D>& p, std::vector<std::uint32_t>& table, bool strict) {
+    std::array<std::size_t, D> first{}, index{};
+    for (int a = 1; a < D; ++a) {
+      const auto& g = grid[a];
+      first[a] = static_cast<std::size_t>(
+          (strict ? std::upper_bound(g.begin(), g.end(), p[a]) : std::lower_bound(g.begin(), g.end(), p[a])) -
+          g.begin());
+      if (first[a] == g.size()) return;
+      index[a] = first[a];
     }
-  });
-  return *std::max_element(best.begin(), best.end());
+    while (true) {
+      std::size_t cell = 0;
+      for (int a = 1; a < D; ++a) cell += index[a] * stride[a];
+      ++table[cell];
+      int a = 1;
+      while (a < D && ++index[a] == grid[a].size()) {
+        index[a] = first[a];
+        ++a;
+      }
+      if (a == D) return;
+    }
+  };
+  std::vector<double> volume(cells);  // product of y_a over the other axes
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    double v = 1.0;
+    std::size_t rest = cell;
+    for (int a = 1; a < D; ++a) {
+      v *= grid[a][rest % grid[a].size()];
+      rest /= grid[a].size();
+    }
+    volume[cell] = v;
+  }
+  const double inv_n = 1.0 / static_cast<double>(n);
+  double best = 0.0;
+  std::size_t next_open = 0, next_closed = 0;
+  for (const double g : grid[0]) {
+    while (next_open < n && u[next_open][0] < g) add(u[next_open++], open, true);
+    while (next_closed < n && u[next_closed][0] <= g) add(u[next_closed++], closed, false);
+    for (std::size_t cell = 0; cell < cells; ++cell) {
+      const double v = g * volume[cell];
+      best = std::max({best, v - open[cell] * inv_n, closed[cell] * inv_n - v});
+    }
+  }
+  return best;
 }
 
 template double l2_star_discrepancy<2>(const PointSet<2>&, const Domain<2>&);
