@@ -65,7 +65,7 @@ struct Periodogram {
 /// complex exponentials along an axis follow from one another by a rotation
 /// (the recurrence e^{-2 pi i (k+1) u} = e^{-2 pi i k u} e^{-2 pi i u},
 /// re-anchored every 32 steps), and the frequency rows are spread over
-/// threads; each frequency sums its points in order, so the result does not
+/// threads; each frequency sums its points in a fixed order, so the result does not
 /// depend on the number of threads. Cost: N M (2K+1)^D / 2 complex
 /// multiply-adds. Throws InvalidArgument for no sets, an empty set, a point
 /// outside the domain or K out of range.

@@ -12,8 +12,9 @@
 // chunk). The innermost loop runs over kx on separate real and imaginary
 // arrays, which the compiler vectorises (SSE2, and AVX2 in a clone chosen at
 // run time; both clones were checked to give the same bytes). Every
-// frequency adds its points, and then its sets, in input order, so the sums
-// are the same bytes on any number of threads.
+// frequency adds its points (four at a time, in input order) and then its
+// sets in a fixed order, so the sums are the same bytes on any number of
+// threads.
 
 #include "pds/analysis/spectrum.h"
 
