@@ -58,8 +58,8 @@ std::vector<Case> cases() {
   // best-candidate with a radius stops at the first round whose best
   // candidate is closer than the radius (m = 10).
   // It is the slowest of the three, so its uniformity sets are smaller.
-  out.push_back({"best-candidate", 2, false, 0.02, 0.71, 0.78, 0.7});  // measured 0.737-0.750
-  out.push_back({"best-candidate", 2, true, 0.02, 0.70, 0.77, 0.7});   // measured 0.731-0.737
+  out.push_back({"best-candidate", 2, false, 0.02, 0.71, 0.78, 0.7});  // measured 0.746-0.750
+  out.push_back({"best-candidate", 2, true, 0.02, 0.70, 0.77, 0.7});   // measured 0.729-0.740
   out.push_back({"best-candidate", 3, false, 0.1, 0.76, 0.83, 0.85});  // measured 0.791-0.801
   out.push_back({"best-candidate", 3, true, 0.1, 0.72, 0.78, 0.85});   // measured 0.747-0.749
   return out;
