@@ -154,7 +154,12 @@ void BM_BestCandidate(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(pds::best_candidate(params, domain, 1).data());
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
-BENCHMARK(BM_BestCandidate<2>)->Args({1'000, 10})->Args({10'000, 10})->Args({10'000, 1})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BestCandidate<2>)
+    ->Args({1'000, 10})
+    ->Args({10'000, 10})
+    ->Args({10'000, 1})
+    ->Args({100'000, 10})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BestCandidate<3>)->Args({1'000, 10})->Args({3'000, 10})->Unit(benchmark::kMillisecond);
 
 }  // namespace

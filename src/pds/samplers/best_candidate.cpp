@@ -15,8 +15,11 @@
 //    the distance from any of its points to the nearest sample, in a max
 //    tree. A new sample lowers U to its farthest-corner distance in the
 //    leaves near it. A leaf visited while loose is tightened: branch and
-//    bound over sub-boxes against the samples near it gives U within 5% of a
-//    leaf edge of the true maximum (or proves it below the round's best).
+//    bound over sub-boxes (down to 1/16 of the leaf edge in 2D, 1/8 in 3D,
+//    or until within 5% of an edge) against the samples near it brings U
+//    close to the true maximum, or proves it below the round's best.
+//    Each leaf keeps a nearby sample: a candidate no farther from it than
+//    the best distance so far cannot win (no nearest-sample query needed).
 // Once m*i >= 256, the candidates are drawn as a Poisson process of mean m*i
 // (independent Poisson counts per leaf, uniform positions): the candidates of
 // a leaf with U <= the best distance found so far cannot win and need not be
@@ -206,8 +209,9 @@ class LeafBounds {
   /// Replaces the leaf's bound by a nearly exact one: the largest distance
   /// from a point of the leaf to the nearest of `near` (which must hold every
   /// sample within bound + half diagonal of the leaf's centre), found by
-  /// branch and bound over sub-boxes down to 1/32 of the leaf's edge. The
-  /// bound stays valid as samples are added; add_sample() marks it loose.
+  /// branch and bound over sub-boxes down to 2^-kMaxTightenLevel of the
+  /// leaf's edge. The bound stays valid as samples are added; add_sample()
+  /// marks it loose.
   /// Boxes whose bound is at most `floor` (the round's best distance, which
   /// no distance will exceed later either) are not refined; a leaf whose
   /// bound ends at the floor stays loose, to be refined again when the best
