@@ -185,8 +185,8 @@ class BridsonGrid {
     }
   }
 
-  static constexpr std::size_t kBlock = 8;
-  static constexpr int kMaxReach = 3;  // floor(sqrt(D)) + 1 for D <= 4
+  static constexpr std::size_t kBlock = 4;  // measured: 4 beats 8 and 16 slightly in 2D and 3D
+  static constexpr int kMaxReach = 3;       // floor(sqrt(D)) + 1 for D <= 4
 
   // On a torus, the margin cells mirror the cells of the opposite faces: a
   // sample is written to every padded position congruent to its cell.
