@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "pds/error.h"
+#include "pds/samplers/dunbar_humphreys.h"
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/regular.h"
@@ -17,6 +18,7 @@ std::span<const Method> methods() {
       white_noise_method(),
       regular_method(),
       jittered_method(),
+      dunbar_humphreys_method(),
   };
   return table;
 }
