@@ -9,6 +9,7 @@
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/regular.h"
+#include "pds/samplers/wei.h"
 
 namespace pds {
 
@@ -19,6 +20,7 @@ std::span<const Method> methods() {
       regular_method(),
       jittered_method(),
       dunbar_humphreys_method(),
+      wei_method(),
   };
   return table;
 }
