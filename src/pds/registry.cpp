@@ -7,6 +7,7 @@
 #include "pds/error.h"
 #include "pds/samplers/dunbar_humphreys.h"
 #include "pds/samplers/jittered.h"
+#include "pds/samplers/jones.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/regular.h"
 #include "pds/samplers/wei.h"
@@ -21,6 +22,7 @@ std::span<const Method> methods() {
       jittered_method(),
       dunbar_humphreys_method(),
       wei_method(),
+      jones_method(),
   };
   return table;
 }
