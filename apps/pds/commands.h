@@ -11,6 +11,7 @@ namespace pds::cli {
 
 void add_generate(CLI::App& app);
 void add_analyze(CLI::App& app);
+void add_methods(CLI::App& app);
 
 /// Options every command that takes a domain shares.
 struct DomainOptions {
@@ -28,5 +29,9 @@ void split_bounds(const DomainOptions& options, int dim, std::vector<double>& lo
 
 /// The text listing every registered method, for --help.
 std::string methods_help();
+
+/// docs/methods.md: the registry as a Markdown table (a test keeps the file in
+/// sync with the registry).
+std::string methods_markdown();
 
 }  // namespace pds::cli

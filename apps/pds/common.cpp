@@ -1,3 +1,5 @@
+#include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "commands.h"
@@ -39,6 +41,38 @@ std::string methods_help() {
   os << "\n--radius is the minimum distance between any two samples (Bridson's and SciPy's convention),\n"
         "not the radius of the disks around them.";
   return os.str();
+}
+
+std::string methods_markdown() {
+  std::ostringstream os;
+  os << "# Methods\n\n"
+        "Generated from the registry by `pds methods --markdown`; a test fails when this file and the\n"
+        "registry disagree. `--radius` is the minimum distance between any two samples.\n\n"
+        "| method | what it makes | sizing | dims | maximal | parameters (default) | reference |\n"
+        "|---|---|---|---|---|---|---|\n";
+  for (const Method& m : methods()) {
+    std::string dims, params;
+    for (int d : m.dims) dims += (dims.empty() ? "" : ", ") + std::to_string(d);
+    for (const MethodParam& p : m.params) {
+      std::ostringstream v;
+      v << p.default_value;
+      params += (params.empty() ? "" : "; ") + ("`" + p.name + "` (" + v.str() + ") " + p.help);
+    }
+    const std::string sizing = m.takes_count && m.takes_radius ? "count or radius"
+                               : m.takes_count                 ? "count"
+                                                               : "radius";
+    os << "| `" << m.name << "` | " << m.summary << " | " << sizing << " | " << dims << " | "
+       << (m.maximal ? "yes" : "no") << " | " << (params.empty() ? "none" : params) << " | "
+       << (m.citation.empty() ? "-" : m.citation) << " |\n";
+  }
+  return os.str();
+}
+
+void add_methods(CLI::App& app) {
+  auto markdown = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand("methods", "List the registered methods");
+  cmd->add_flag("--markdown", *markdown, "Print the Markdown table of docs/methods.md");
+  cmd->callback([markdown] { std::cout << (*markdown ? methods_markdown() : methods_help() + "\n"); });
 }
 
 }  // namespace pds::cli

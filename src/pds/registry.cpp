@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "pds/error.h"
+#include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/dunbar_humphreys.h"
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/jones.h"
@@ -20,6 +21,7 @@ std::span<const Method> methods() {
       white_noise_method(),
       regular_method(),
       jittered_method(),
+      dart_throwing_method(),
       dunbar_humphreys_method(),
       wei_method(),
       jones_method(),
