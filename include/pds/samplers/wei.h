@@ -12,9 +12,13 @@ namespace pds {
 
 struct WeiParams {
   double radius = 0.01;  // minimum distance between samples, > 0
-  int trials = 4;        // k: dart trials per cell and level, >= 1 (Wei's k; more gives a denser set)
-  int levels = 8;        // grid levels, >= 1: level 0 has cells of edge <= radius/sqrt(D), each
-                         // further level halves them and visits only cells no single disk covers
+  // k: dart trials per cell and level, >= 1. With levels = 4, k = 2 gives the
+  // density and nearest-neighbour distances of maximal dart throwing (measured,
+  // docs/wei.md); larger k or more levels pack denser than dart throwing can.
+  int trials = 2;
+  // Grid levels, in [1, 10]: level 0 has cells of edge <= radius/sqrt(D); each
+  // further level halves them and retries only in cells no single disk covers.
+  int levels = 4;
   int threads = 0;       // worker threads, 0 = all hardware threads; never changes the output
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
 };

@@ -56,8 +56,15 @@ class Arcs {
   }
   bool empty() const { return arcs_.empty(); }
 
-  /// Removes the open interval (lo, hi), hi - lo < 2 pi, any position.
+  /// Removes the open interval (lo, hi), hi - lo < 2 pi, lo in [-2 pi, 2 pi).
   void remove(double lo, double hi) {
+    if (hi <= 0.0) {
+      lo += kTwoPi;
+      hi += kTwoPi;
+    } else if (lo >= kTwoPi) {
+      lo -= kTwoPi;
+      hi -= kTwoPi;
+    }
     if (lo < 0.0) {
       remove_normalized(lo + kTwoPi, kTwoPi);
       remove_normalized(0.0, hi);
@@ -285,6 +292,7 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
         c = std::atan2(dy, dx);
       }
       if (c >= kTwoPi) c -= kTwoPi;
+      if (c < 0.0) c += kTwoPi;
       arcs.remove(c - h, c + h);
     });
 

@@ -367,11 +367,13 @@ const Method& wei_method() {
       .summary = "parallel Poisson disk sampling (Wei): phase groups of grid cells, k darts per cell, multi-level",
       .citation = "L.-Y. Wei, Parallel Poisson disk sampling, ACM SIGGRAPH 2008",
       .takes_radius = true,
-      .params = {{"k", 4, 1, 1000, true, "dart trials per cell and level"},
-                 {"levels", 8, 1, kMaxLevels, true, "grid levels (each halves the cells of the last)"}},
+      .params = {{"k", double(WeiParams{}.trials), 1, 1000, true, "dart trials per cell and level"},
+                 {"levels", double(WeiParams{}.levels), 1, kMaxLevels, true,
+                  "grid levels (each halves the cells of the last and retries where no single disk covers)"}},
       .run = [](const GenerateRequest& r) {
         return run_typed(r, [&](const auto& domain) {
-          const WeiParams params{*r.radius, static_cast<int>(r.param("k", 4)), static_cast<int>(r.param("levels", 8)),
+          const WeiParams params{*r.radius, static_cast<int>(r.param("k", WeiParams{}.trials)),
+                                 static_cast<int>(r.param("levels", WeiParams{}.levels)),
                                  r.threads, r.max_points};
           return wei(params, domain, r.seed);
         });
