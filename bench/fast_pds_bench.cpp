@@ -14,7 +14,9 @@
 
 #include "pds/analysis/distance.h"
 #include "pds/analysis/relative_radius.h"
+#include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/dunbar_humphreys.h"
+#include "pds/samplers/jones.h"
 #include "pds/samplers/wei.h"
 
 namespace {
@@ -59,7 +61,7 @@ BENCHMARK(BM_DunbarHumphreys)->RangeMultiplier(10)->Range(10'000, 10'000'000)->U
 /// Wei with state.range(1) threads.
 void BM_Wei(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(1));
-  run(state, 0.725, [&](double r) {
+  run(state, 0.70, [&](double r) {
     pds::WeiParams params;
     params.radius = r;
     params.threads = threads;
@@ -71,5 +73,19 @@ BENCHMARK(BM_Wei)
     ->ArgsProduct({{1'000'000}, {2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+void BM_Jones(benchmark::State& state) {
+  run(state, 0.684, [](double r) { return pds::jones({r}, pds::Domain<2>::unit(true), 1); });
+}
+// Up to 10^6: on the torus every sample is in the triangulation 9 times (about
+// 1.5 GB at 10^6), which puts 10^7 out of this machine's reach.
+BENCHMARK(BM_Jones)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
+
+// The baseline: dart throwing (issue 3) with its default failure bound, which
+// stops near rho 0.75 without maximality.
+void BM_DartThrowingBaseline(benchmark::State& state) {
+  run(state, 0.66, [](double r) { return pds::dart_throwing<2>({r}, pds::Domain<2>::unit(true), 1); });
+}
+BENCHMARK(BM_DartThrowingBaseline)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
 
 }  // namespace

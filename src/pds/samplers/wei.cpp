@@ -141,14 +141,21 @@ class WeiSampler {
     return g;
   }
 
-  /// True if no sample in the cells around `cell` is closer than r to x.
-  bool free(const Point<D>& x, const std::array<int, D>& cell) const {
-    bool ok = true;
+  /// The samples of the cells within reach of `cell`: every sample closer
+  /// than r to a point of the cell. Gathered once per cell and reused by all
+  /// its darts and children.
+  void gather(const std::array<int, D>& cell, std::vector<Point<D>>& near) const {
+    near.clear();
     for_each_near(cell, [&](const Point<D>& s) {
-      if (domain_.distance2(x, s) < r2_) ok = false;
-      return ok;
+      near.push_back(s);
+      return true;
     });
-    return ok;
+  }
+
+  bool free(const Point<D>& x, const std::vector<Point<D>>& near) const {
+    for (const Point<D>& s : near)
+      if (domain_.distance2(x, s) < r2_) return false;
+    return true;
   }
 
   /// Calls f(sample) for the samples of the cells within reach of `cell`;
@@ -200,13 +207,14 @@ class WeiSampler {
   }
 
   /// Up to k darts in one cell; stores the first that fits and returns true.
-  bool throw_darts(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level) {
+  bool throw_darts(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level,
+                   const std::vector<Point<D>>& near) {
     Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, sub});
     Point<D> lo, hi, x;
     sub_bounds(c, sub, level, lo, hi);
     for (int t = 0; t < params_.trials; ++t) {
       for (int i = 0; i < D; ++i) x[i] = rng.uniform(lo[i], hi[i]);
-      if (free(x, c)) {
+      if (free(x, near)) {
         grid_[cell] = x;
         return true;
       }
@@ -246,11 +254,13 @@ class WeiSampler {
       const auto& units = by_group[g];
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, units.size(), 64), [&](const auto& range) {
         std::vector<std::uint32_t> order;
+        std::vector<Point<D>> near;
         for (std::size_t u = range.begin(); u != range.end(); ++u) {
           const Unit& unit = units[u];
           const auto c = coords(unit.cell);
+          gather(c, near);
           if (level == 0) {
-            throw_darts(unit.cell, c, 0, 0);
+            throw_darts(unit.cell, c, 0, 0, near);
             continue;
           }
           // The active fine cells of this level-0 cell, in a random order.
@@ -259,31 +269,29 @@ class WeiSampler {
           Rng rng(seed_, {static_cast<std::uint64_t>(level), unit.cell, ~std::uint64_t{0}});
           for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
           for (const std::uint32_t a : order)
-            if (throw_darts(unit.cell, c, active_[a].sub, level)) break;
+            if (throw_darts(unit.cell, c, active_[a].sub, level, near)) break;
         }
       });
     }
   }
 
   /// True if one sample's disk contains the whole box [lo, hi].
-  bool covered(const Point<D>& lo, const Point<D>& hi, const std::array<int, D>& cell) const {
+  bool covered(const Point<D>& lo, const Point<D>& hi, const std::vector<Point<D>>& near) const {
     Point<D> centre;
     std::array<double, D> half;
     for (int i = 0; i < D; ++i) {
       centre[i] = 0.5 * (lo[i] + hi[i]);
       half[i] = 0.5 * (hi[i] - lo[i]);
     }
-    bool found = false;
-    for_each_near(cell, [&](const Point<D>& s) {
+    for (const Point<D>& s : near) {
       double far2 = 0.0;
       for (int i = 0; i < D; ++i) {
         const double d = std::abs(domain_.delta(s[i], centre[i], i)) + half[i];
         far2 += d * d;
       }
-      found = far2 <= r2_;
-      return !found;
-    });
-    return found;
+      if (far2 <= r2_) return true;
+    }
+    return false;
   }
 
   /// Builds the active cells of `level` from those of level - 1: children of
@@ -302,13 +310,20 @@ class WeiSampler {
     std::vector<std::uint8_t> masks(parents.size());
     const int parent_side = 1 << (level - 1);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, parents.size(), 256), [&](const auto& range) {
+      std::vector<Point<D>> near;
+      std::uint32_t gathered = std::numeric_limits<std::uint32_t>::max();
       for (std::size_t p = range.begin(); p != range.end(); ++p) {
         const auto c = coords(parents[p].parent);
+        // Fine cells of one level-0 cell are contiguous: gather once for them.
+        if (parents[p].parent != gathered) {
+          gather(c, near);
+          gathered = parents[p].parent;
+        }
         std::uint8_t mask = 0;
         for (int child = 0; child < kChildren; ++child) {
           Point<D> lo, hi;
           sub_bounds(c, child_sub(parents[p].sub, child, parent_side), level, lo, hi);
-          if (!covered(lo, hi, c)) mask |= static_cast<std::uint8_t>(1u << child);
+          if (!covered(lo, hi, near)) mask |= static_cast<std::uint8_t>(1u << child);
         }
         masks[p] = mask;
       }
