@@ -52,9 +52,7 @@ void run(benchmark::State& state, double density, Make make) {
 }
 
 void BM_DunbarHumphreys(benchmark::State& state) {
-  run(state, 0.875, [](double r) {
-    return pds::dunbar_humphreys({r}, pds::Domain<2>::unit(true), 1);
-  });
+  run(state, 0.875, [](double r) { return pds::dunbar_humphreys({r}, pds::Domain<2>::unit(true), 1); });
 }
 BENCHMARK(BM_DunbarHumphreys)->RangeMultiplier(10)->Range(10'000, 10'000'000)->Unit(benchmark::kMillisecond);
 
@@ -82,10 +80,11 @@ void BM_Jones(benchmark::State& state) {
 BENCHMARK(BM_Jones)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
 
 // The baseline: dart throwing (issue 3) with its default failure bound, which
-// stops near rho 0.75 without maximality.
+// stops near rho 0.75 without maximality. Its failure bound grows with N, so
+// the cost is superlinear; 10^6 takes longer than a benchmark run should.
 void BM_DartThrowingBaseline(benchmark::State& state) {
   run(state, 0.66, [](double r) { return pds::dart_throwing<2>({r}, pds::Domain<2>::unit(true), 1); });
 }
-BENCHMARK(BM_DartThrowingBaseline)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DartThrowingBaseline)->RangeMultiplier(10)->Range(10'000, 100'000)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -12,7 +12,7 @@
 namespace pds {
 
 struct DunbarHumphreysParams {
-  double radius = 0.01;                         // minimum distance between samples, > 0
+  double radius = 0.01;                          // minimum distance between samples, > 0
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
 };
 

@@ -210,8 +210,8 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
 
   CellGrid grid(domain, r / std::sqrt(2.0));
   // Cells that may hold a sample within 2 rc.
-  const int reach = static_cast<int>(std::ceil(2.0 * rc * std::max(grid.n(0) / domain.extent(0),
-                                                                    grid.n(1) / domain.extent(1))));
+  const int reach =
+      static_cast<int>(std::ceil(2.0 * rc * std::max(grid.n(0) / domain.extent(0), grid.n(1) / domain.extent(1))));
   PointSet<2> points;
   // Boundary sampling makes about 0.875 samples per r^2 (rho ~ 0.87); reserving
   // that avoids the doubling that would otherwise set the peak memory.
@@ -328,15 +328,17 @@ const Method& dunbar_humphreys_method() {
   static const Method method{
       .name = "dunbar-humphreys",
       .summary = "boundary sampling (Dunbar & Humphreys): maximal Poisson disk set in O(N), 2D, --radius",
-      .citation = "D. Dunbar, G. Humphreys, A spatial data structure for fast Poisson-disk sample generation, "
-                  "ACM SIGGRAPH 2006",
+      .citation =
+          "D. Dunbar, G. Humphreys, A spatial data structure for fast Poisson-disk sample generation, "
+          "ACM SIGGRAPH 2006",
       .takes_radius = true,
       .maximal = true,
       .dims = {2},
-      .run = [](const GenerateRequest& r) {
-        const DunbarHumphreysParams params{*r.radius, r.max_points};
-        return PointCloud::from<2>(dunbar_humphreys(params, r.domain<2>(), r.seed));
-      },
+      .run =
+          [](const GenerateRequest& r) {
+            const DunbarHumphreysParams params{*r.radius, r.max_points};
+            return PointCloud::from<2>(dunbar_humphreys(params, r.domain<2>(), r.seed));
+          },
   };
   return method;
 }

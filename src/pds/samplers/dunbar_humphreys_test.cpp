@@ -36,7 +36,7 @@ TEST(DunbarHumphreys, SameSeedSamePointsOtherSeedOtherPoints) {
 TEST(DunbarHumphreys, RejectsBadInput) {
   EXPECT_THROW(dunbar_humphreys({-1.0}, Domain<2>::unit(), 1), InvalidArgument);
   EXPECT_THROW(dunbar_humphreys({INFINITY}, Domain<2>::unit(), 1), InvalidArgument);
-  EXPECT_THROW(dunbar_humphreys({0.3}, Domain<2>::unit(true), 1), InvalidArgument);  // period < 4 radius
+  EXPECT_THROW(dunbar_humphreys({0.3}, Domain<2>::unit(true), 1), InvalidArgument);     // period < 4 radius
   EXPECT_THROW(dunbar_humphreys({1e-7, 1000}, Domain<2>::unit(), 1), InvalidArgument);  // over the budget
 }
 

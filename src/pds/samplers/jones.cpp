@@ -320,7 +320,8 @@ class JonesSampler {
       }
       // Located from the same copy of the cell the dart came from: O(1) walk.
       const Vertex hint = from >= 0 ? handles_[static_cast<std::size_t>(from) * copies_ + c] : Vertex();
-      const Vertex v = hint != Vertex() ? dt_.insert(Delaunay::Point(x, y), hint->face()) : dt_.insert(Delaunay::Point(x, y));
+      const Vertex v =
+          hint != Vertex() ? dt_.insert(Delaunay::Point(x, y), hint->face()) : dt_.insert(Delaunay::Point(x, y));
       v->info() = k;
       handles_.push_back(v);
     }
@@ -374,15 +375,17 @@ const Method& jones_method() {
   static const Method method{
       .name = "jones",
       .summary = "Voronoi-based maximal dart throwing (Jones): cell chosen by free area, 2D, --radius",
-      .citation = "T. R. Jones, Efficient generation of Poisson-disk sampling patterns, journal of graphics tools "
-                  "11(2), 2006",
+      .citation =
+          "T. R. Jones, Efficient generation of Poisson-disk sampling patterns, journal of graphics tools "
+          "11(2), 2006",
       .takes_radius = true,
       .maximal = true,
       .dims = {2},
-      .run = [](const GenerateRequest& r) {
-        const JonesParams params{*r.radius, r.max_points};
-        return PointCloud::from<2>(jones(params, r.domain<2>(), r.seed));
-      },
+      .run =
+          [](const GenerateRequest& r) {
+            const JonesParams params{*r.radius, r.max_points};
+            return PointCloud::from<2>(jones(params, r.domain<2>(), r.seed));
+          },
   };
   return method;
 }
