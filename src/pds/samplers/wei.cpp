@@ -40,6 +40,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -111,6 +112,7 @@ class WeiSampler {
         run_level(level);
       }
     });
+    active_ = {};  // freed before the output is built
     PointSet<D> points;
     std::size_t count = 0;
     for (const auto& p : grid_) count += !std::isnan(p[0]);
@@ -293,39 +295,35 @@ class WeiSampler {
   }
 
   void run_level(int level) {
-    // The units of work per group: level-0 cells, each with the range of its
-    // active fine cells (at level 0 the cell itself).
-    struct Unit {
-      std::uint32_t cell, begin, end;
-    };
-    std::vector<std::vector<Unit>> by_group(level == 0 ? 0 : group_count());
-    for (std::size_t i = 0; level > 0 && i < active_.size();) {
-      std::size_t j = i;
-      while (j < active_.size() && active_[j].parent == active_[i].parent) ++j;
-      by_group[group_of(active_[i].parent)].push_back(
-          {active_[i].parent, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)});
-      i = j;
-    }
     for (const std::size_t g : group_order(level)) {
       if (level == 0) {
         run_level0_group(g);
         continue;
       }
-      const auto& units = by_group[g];
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, units.size(), 64), [&](const auto& range) {
+      // active_ is sorted by group, and within a group the fine cells of one
+      // level-0 cell are contiguous: a unit of work is such a run. A chunk
+      // processes the runs that start inside it (running past its end if
+      // need be), so chunking never changes what is computed.
+      const std::size_t begin = group_begin_[g], end = group_begin_[g + 1];
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 256), [&](const auto& range) {
         std::vector<std::uint32_t> order;
         std::vector<Point<D>> near;
-        for (std::size_t u = range.begin(); u != range.end(); ++u) {
-          const Unit& unit = units[u];
-          const auto c = coords(unit.cell);
+        std::size_t i = range.begin();
+        while (i < range.end() && i > begin && active_[i].parent == active_[i - 1].parent) ++i;
+        while (i < range.end()) {
+          const std::uint32_t cell = active_[i].parent;
+          std::size_t j = i;
+          while (j < end && active_[j].parent == cell) ++j;
+          const auto c = coords(cell);
           gather(c, near);
           // The active fine cells of this level-0 cell, in a random order.
-          order.assign(unit.end - unit.begin, 0);
-          std::iota(order.begin(), order.end(), unit.begin);
-          Rng rng(seed_, {static_cast<std::uint64_t>(level), unit.cell, ~std::uint64_t{0}});
-          for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
+          order.resize(j - i);
+          std::iota(order.begin(), order.end(), static_cast<std::uint32_t>(i));
+          Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, ~std::uint64_t{0}});
+          for (std::size_t n = order.size(); n > 1; --n) std::swap(order[n - 1], order[rng.below(n)]);
           for (const std::uint32_t a : order)
-            if (throw_darts(unit.cell, c, active_[a].sub, level, near)) break;
+            if (throw_darts(cell, c, active_[a].sub, level, near)) break;
+          i = j;
         }
       });
     }
@@ -383,11 +381,22 @@ class WeiSampler {
         masks[p] = mask;
       }
     });
-    std::vector<FineCell> next;
+    // The new active cells, sorted by phase group (a counting sort, written in
+    // place), in parent order within a group.
+    group_begin_.assign(group_count() + 1, 0);
     for (std::size_t p = 0; p < count; ++p)
+      if (masks[p])
+        group_begin_[group_of(parent_at(p).parent) + 1] += static_cast<std::size_t>(std::popcount(masks[p]));
+    for (std::size_t g = 0; g + 1 < group_begin_.size(); ++g) group_begin_[g + 1] += group_begin_[g];
+    std::vector<std::size_t> fill(group_begin_.begin(), group_begin_.end() - 1);
+    std::vector<FineCell> next(group_begin_.back());
+    for (std::size_t p = 0; p < count; ++p) {
+      if (!masks[p]) continue;
+      const FineCell f = parent_at(p);
+      std::size_t& at = fill[group_of(f.parent)];
       for (int child = 0; child < kChildren; ++child)
-        if (masks[p] >> child & 1)
-          next.push_back({parent_at(p).parent, child_sub(parent_at(p).sub, child, parent_side)});
+        if (masks[p] >> child & 1) next[at++] = {f.parent, child_sub(f.sub, child, parent_side)};
+    }
     active_ = std::move(next);
   }
 
@@ -414,7 +423,8 @@ class WeiSampler {
   // The sample of each level-0 cell as a float offset from the cell's corner
   // (NaN if none): 8 bytes a cell in 2D instead of 16.
   std::vector<Offset> grid_;
-  std::vector<FineCell> active_;
+  std::vector<FineCell> active_;          // this level's cells, sorted by phase group
+  std::vector<std::size_t> group_begin_;  // where each group's cells start in active_
 };
 
 }  // namespace
