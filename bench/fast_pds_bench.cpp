@@ -76,7 +76,7 @@ void BM_Jones(benchmark::State& state) {
   run(state, 0.684, [](double r) { return pds::jones({r}, pds::Domain<2>::unit(true), 1); });
 }
 // Up to 10^6: on the torus every sample is in the triangulation 9 times (about
-// 1.5 GB at 10^6), which puts 10^7 out of this machine's reach.
+// 1.4 GB at 10^6), which puts 10^7 out of this machine's reach.
 BENCHMARK(BM_Jones)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
 
 // The baseline: dart throwing (issue 3) with its default failure bound, which
