@@ -7,10 +7,10 @@
 // available neighbourhood of a sample as scalloped sectors; restricted to the
 // circle, that region is a set of angular intervals, which is what we store.
 // Front samples are taken in insertion order (breadth first, which keeps
-// memory access local; the guarantees do not depend on the order); a front
-// sample's available arcs are computed from the samples within 2r (a sample at distance d blocks the arc of half-angle
-// acos(d / 2r) around its direction); then points are drawn uniformly on the
-// remaining arcs, each new sample blocking +-60 degrees around itself, until no
+// memory access local; the guarantees do not depend on the order). A front
+// sample's available arcs are computed from the samples within 2r (a sample at
+// distance d blocks the arc of half-angle acos(d / 2r) around its direction);
+// then points are drawn uniformly on the remaining arcs, each new sample blocking +-60 degrees around itself, until no
 // arc remains. The new samples join the front; the sample leaves it.
 //
 // Guarantees. Every new sample is at distance >= r from every other (checked
@@ -21,8 +21,11 @@
 // closer than r; hence every point is within r(1 + 1e-10) of a sample.
 //
 // Complexity. Each sample is processed once with a constant number of
-// neighbours: O(N) time; memory is the output, one int32 per grid cell (about
-// 3 per sample) and the front.
+// neighbours: O(N) time. Memory: the output, one int32 per grid cell (about
+// 2.4 per sample) and each sample's parent and angle (12 bytes); the front is
+// the unprocessed tail of the output. The arcs blocked by a sample's parent
+// and siblings follow from their angles on the parent's circle, which saves
+// the atan2 and acos for those neighbours.
 //
 // Limits. 2D only (the paper is 2D). Boundary sampling is not the unbiased
 // process: samples sit exactly at distance r from their parent, so the set is
