@@ -30,7 +30,7 @@ struct DunbarHumphreysParams {
 /// 0.78, every nearest neighbour at distance radius; see
 /// docs/dunbar-humphreys.md). 2D only.
 /// Invalid: a radius that is not positive and finite, one whose densest
-/// packing exceeds max_points, or on a torus a period shorter than 4 radius.
+/// packing exceeds max_points, or on a torus a period of 4 radius or less.
 PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed);
 
 const Method& dunbar_humphreys_method();

@@ -205,10 +205,11 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
   const double rc = r * (1.0 + 1e-10);
   if (domain.periodic)
     for (int i = 0; i < 2; ++i)
-      if (domain.extent(i) < 4.0 * rc)
-        throw InvalidArgument("dunbar-humphreys: on a torus every period must be at least 4 radius; axis " +
-                              std::to_string(i) + " has " + std::to_string(domain.extent(i)) + " for radius " +
-                              std::to_string(r));
+      if (domain.extent(i) < 4.0 * rc)  // neighbours within 2 rc need one nearest image
+        throw InvalidArgument(
+            "dunbar-humphreys: on a torus every period must be more than 4 radius (the circles are 1e-10 larger than "
+            "the radius); axis " +
+            std::to_string(i) + " has " + std::to_string(domain.extent(i)) + " for radius " + std::to_string(r));
   const double r2 = r * r;
 
   CellGrid grid(domain, r / std::sqrt(2.0));
