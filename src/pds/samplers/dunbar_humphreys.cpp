@@ -189,11 +189,6 @@ class CellGrid {
   std::vector<std::int32_t> cells_;
 };
 
-struct Neighbour {
-  double dx, dy;  // offset from the front sample (minimum image on a torus)
-  std::int32_t index;
-};
-
 }  // namespace
 
 PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed) {
@@ -242,7 +237,7 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
   add(uniform_point(rng, domain), -1, 0.0);
 
   Arcs arcs;
-  std::vector<Neighbour> neighbours;
+  std::vector<std::int32_t> neighbours;  // samples within 2 rc of the front sample, and its new ones
   const double reach2 = 4.0 * rc * rc;
   constexpr double kPi = std::numbers::pi;
   // The front is every sample not yet processed; taking it in insertion order
@@ -277,7 +272,7 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
       const double dx = domain.delta(p[0], s[0], 0), dy = domain.delta(p[1], s[1], 1);
       const double d2 = dx * dx + dy * dy;
       if (d2 >= reach2) return;
-      neighbours.push_back({dx, dy, j});
+      neighbours.push_back(j);
       const auto js = static_cast<std::size_t>(j);
       double c, h;
       if (j == pp) {
@@ -306,9 +301,9 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
       const double dx = rc * std::cos(theta), dy = rc * std::sin(theta);
       const Point<2> q = domain.wrap(Point<2>{{p[0] + dx, p[1] + dy}});
       bool ok = domain.contains(q) && domain.distance2(p, q) >= r2;
-      for (const Neighbour& nb : neighbours) {
+      for (const std::int32_t j : neighbours) {
         if (!ok) break;
-        ok = domain.distance2(q, points[static_cast<std::size_t>(nb.index)]) >= r2;
+        ok = domain.distance2(q, points[static_cast<std::size_t>(j)]) >= r2;
       }
       if (!ok) {
         // Only rounding at an arc's end or at a wall can get here: drop a
@@ -320,7 +315,7 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
         continue;
       }
       const std::int32_t qi = add(q, pi, theta);
-      neighbours.push_back({dx, dy, qi});
+      neighbours.push_back(qi);
       // A sample on the circle blocks exactly +-60 degrees of it.
       arcs.remove(theta - kPi / 3.0, theta + kPi / 3.0);
     }
