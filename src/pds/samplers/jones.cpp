@@ -135,16 +135,25 @@ class JonesSampler {
         for (double y : {domain_.lo[1] - e, domain_.hi[1] + e}) dt_.insert(Delaunay::Point(x, y))->info() = -1;
     }
     insert(uniform_point(rng_, domain_), -1);
-    // A miss is a dart in the circular segment of a piece; with pieces that
-    // are not degenerate about half of the darts hit. A cell whose darts all
-    // miss this often is a rounding artefact and is dropped (counted).
+    // A miss is a dart in the circular segment of a piece or, rarely, one that
+    // rounding puts too close to a sample. Pieces are cut where a vertex is at
+    // least 1e-10 r outside the disk, so about half of the darts hit; a cell
+    // missing this often in a row means the geometry broke down numerically.
     constexpr int kMaxMisses = 10000;
+    int empty_picks = 0;
     while (tree_.total() > 0.0) {
       const std::size_t k = tree_.find(rng_.uniform() * tree_.total());
-      if (!(tree_.weight(k) > 0.0)) continue;  // u rounded onto an empty leaf's boundary
+      if (!(tree_.weight(k) > 0.0)) {
+        // Only rounding at a leaf's boundary picks an empty leaf.
+        if (++empty_picks > kMaxMisses) throw Failure("jones: the area tree keeps picking empty cells");
+        continue;
+      }
+      empty_picks = 0;
       const auto dart = draw(k);
       if (!dart) {
-        if (++misses_[k] > kMaxMisses) tree_.set(k, 0.0);
+        if (++misses_[k] > kMaxMisses)
+          throw Failure("jones: " + std::to_string(kMaxMisses) + " darts in a row missed the free area of cell " +
+                        std::to_string(k) + " (radius " + std::to_string(radius_) + ")");
         continue;
       }
       insert(*dart, static_cast<std::int32_t>(k));
