@@ -17,7 +17,8 @@ namespace pds::test {
 /// [0, 1)^D (box index: axis 0 fastest). Points outside the cube are counted
 /// in an extra last entry, so they make every check fail.
 template <int D>
-std::vector<std::uint32_t> box_counts(const PointSet<D>& points, const std::type_identity_t<std::array<std::uint64_t, D>>& divisions) {
+std::vector<std::uint32_t> box_counts(const PointSet<D>& points,
+                                      const std::type_identity_t<std::array<std::uint64_t, D>>& divisions) {
   std::uint64_t boxes = 1;
   for (auto d : divisions) boxes *= d;
   std::vector<std::uint32_t> counts(boxes + 1, 0);
@@ -38,7 +39,8 @@ std::vector<std::uint32_t> box_counts(const PointSet<D>& points, const std::type
 
 /// Describes the first box whose count differs from `expected`, or "".
 template <int D>
-std::string stratification_error(const PointSet<D>& points, const std::type_identity_t<std::array<std::uint64_t, D>>& divisions,
+std::string stratification_error(const PointSet<D>& points,
+                                 const std::type_identity_t<std::array<std::uint64_t, D>>& divisions,
                                  std::uint32_t expected) {
   const auto counts = box_counts(points, divisions);
   if (counts.back() != 0) return std::to_string(counts.back()) + " points outside the unit cube";

@@ -208,14 +208,22 @@ Point<D> from_unit_cube(const Point<D>& u, const Domain<D>& domain) {
 template <class F>
 decltype(auto) with_prime_base(int axis, F&& f) {
   switch (axis) {
-    case 0: return f(std::integral_constant<unsigned, kPrimes[0]>{});
-    case 1: return f(std::integral_constant<unsigned, kPrimes[1]>{});
-    case 2: return f(std::integral_constant<unsigned, kPrimes[2]>{});
-    case 3: return f(std::integral_constant<unsigned, kPrimes[3]>{});
-    case 4: return f(std::integral_constant<unsigned, kPrimes[4]>{});
-    case 5: return f(std::integral_constant<unsigned, kPrimes[5]>{});
-    case 6: return f(std::integral_constant<unsigned, kPrimes[6]>{});
-    default: return f(std::integral_constant<unsigned, kPrimes[7]>{});
+    case 0:
+      return f(std::integral_constant<unsigned, kPrimes[0]>{});
+    case 1:
+      return f(std::integral_constant<unsigned, kPrimes[1]>{});
+    case 2:
+      return f(std::integral_constant<unsigned, kPrimes[2]>{});
+    case 3:
+      return f(std::integral_constant<unsigned, kPrimes[3]>{});
+    case 4:
+      return f(std::integral_constant<unsigned, kPrimes[4]>{});
+    case 5:
+      return f(std::integral_constant<unsigned, kPrimes[5]>{});
+    case 6:
+      return f(std::integral_constant<unsigned, kPrimes[6]>{});
+    default:
+      return f(std::integral_constant<unsigned, kPrimes[7]>{});
   }
 }
 

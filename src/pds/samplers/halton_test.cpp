@@ -17,9 +17,15 @@ const Scramble kAllScrambles[] = {Scramble::none, Scramble::permute_digits, Scra
 TEST(Halton, FirstPointsArePublishedValues) {
   // Halton (1960); the table in every textbook: base 2 1/2, 1/4, 3/4, 1/8, ...
   // base 3 1/3, 2/3, 1/9, 4/9, ...; base 5 1/5, 2/5, 3/5, 4/5, 1/25, ...
-  const double expected[9][3] = {{0, 0, 0},           {1. / 2, 1. / 3, 1. / 5}, {1. / 4, 2. / 3, 2. / 5},
-                                 {3. / 4, 1. / 9, 3. / 5}, {1. / 8, 4. / 9, 4. / 5}, {5. / 8, 7. / 9, 1. / 25},
-                                 {3. / 8, 2. / 9, 6. / 25}, {7. / 8, 5. / 9, 11. / 25}, {1. / 16, 8. / 9, 16. / 25}};
+  const double expected[9][3] = {{0, 0, 0},
+                                 {1. / 2, 1. / 3, 1. / 5},
+                                 {1. / 4, 2. / 3, 2. / 5},
+                                 {3. / 4, 1. / 9, 3. / 5},
+                                 {1. / 8, 4. / 9, 4. / 5},
+                                 {5. / 8, 7. / 9, 1. / 25},
+                                 {3. / 8, 2. / 9, 6. / 25},
+                                 {7. / 8, 5. / 9, 11. / 25},
+                                 {1. / 16, 8. / 9, 16. / 25}};
   const auto points = halton<3>({9}, Domain<3>::unit(), 0);
   // Exact: each value is the correctly rounded rational, as the division above.
   for (int i = 0; i < 9; ++i)
@@ -46,8 +52,8 @@ TEST(Halton, StratifiesTwoToTheAThreeToTheB) {
       for (int b = 0; b <= 4; ++b) {
         const std::uint64_t nx = std::uint64_t{1} << a, ny = static_cast<std::uint64_t>(std::pow(3, b));
         const auto points = halton<2>({nx * ny, 0, s}, Domain<2>::unit(), 11);
-        EXPECT_EQ(test::stratification_error<2>(points, {nx, ny}, 1), "") << "scramble " << int(s) << " a " << a
-                                                                          << " b " << b;
+        EXPECT_EQ(test::stratification_error<2>(points, {nx, ny}, 1), "")
+            << "scramble " << int(s) << " a " << a << " b " << b;
       }
 }
 

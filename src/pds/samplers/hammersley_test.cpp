@@ -42,7 +42,8 @@ TEST(Hammersley, PartsOfASetMatchTheWholeSet) {
 TEST(Hammersley, SeedsMatterOnlyWhenScrambled) {
   const auto domain = Domain<2>::unit();
   EXPECT_EQ(hammersley<2>({100}, domain, 1), hammersley<2>({100}, domain, 2));
-  EXPECT_NE(hammersley<2>({100, 0, 0, Scramble::owen}, domain, 1), hammersley<2>({100, 0, 0, Scramble::owen}, domain, 2));
+  EXPECT_NE(hammersley<2>({100, 0, 0, Scramble::owen}, domain, 1),
+            hammersley<2>({100, 0, 0, Scramble::owen}, domain, 2));
 }
 
 }  // namespace

@@ -62,9 +62,10 @@ const Method& latin_hypercube_method() {
       .summary = "Latin hypercube (N-rooks): one point in every slab of every axis, random across axes",
       .citation = "M. D. McKay, R. J. Beckman and W. J. Conover, Technometrics 21(2), 1979",
       .takes_count = true,
-      .run = [](const GenerateRequest& r) {
-        return run_typed(r, [&](const auto& domain) { return latin_hypercube({*r.count}, domain, r.seed); });
-      },
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) { return latin_hypercube({*r.count}, domain, r.seed); });
+          },
   };
   return method;
 }

@@ -162,8 +162,8 @@ void expect_far_below_white_noise(const char* name, const PointSet<D>& points) {
   // N = 1024: 20-300 times below, see docs/low-discrepancy.md).
   const double expected_white = white_noise_expected_t2(D, points.size());
   const double t2 = l2_star_discrepancy_squared(points);
-  EXPECT_LT(t2, expected_white / 10) << name << " in " << D << "D: T^2 = " << t2 << ", white noise E[T^2] = "
-                                     << expected_white;
+  EXPECT_LT(t2, expected_white / 10) << name << " in " << D << "D: T^2 = " << t2
+                                     << ", white noise E[T^2] = " << expected_white;
 }
 
 TEST(LowDiscrepancy, SobolAndHaltonAreFarBelowWhiteNoiseAt1024) {

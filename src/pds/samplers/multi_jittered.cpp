@@ -39,8 +39,7 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
       throw InvalidArgument("multi-jittered: strata along axis " + std::to_string(k) + " must be at least 1, got " +
                             std::to_string(params.cells[k]));
     n *= static_cast<std::uint64_t>(params.cells[k]);
-    if (n > (std::uint64_t{1} << 32))
-      throw InvalidArgument("multi-jittered: more than 2^32 strata requested");
+    if (n > (std::uint64_t{1} << 32)) throw InvalidArgument("multi-jittered: more than 2^32 strata requested");
   }
   PointSet<D> points(n);
   for (int k = 0; k < D; ++k) {
@@ -61,7 +60,8 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
       for (int l = D - 1; l >= 0; --l)
         if (l != k) r = r * static_cast<std::uint64_t>(params.cells[l]) + cell[l];
       const std::uint32_t column = cell[k];
-      const std::uint64_t slab = std::uint64_t{column} * m + shuffle[(params.correlated ? 0 : column) * std::uint64_t{m} + r];
+      const std::uint64_t slab =
+          std::uint64_t{column} * m + shuffle[(params.correlated ? 0 : column) * std::uint64_t{m} + r];
       p[k] = slab_coordinate(slab, n, jitter);
       for (int l = 0; l < D && ++cell[l] == static_cast<std::uint32_t>(params.cells[l]); ++l) cell[l] = 0;
     }
@@ -77,8 +77,9 @@ const Method& multi_jittered_method() {
   static const Method method{
       .name = "multi-jittered",
       .summary = "(correlated) multi-jittered: one point per stratum of a near-cubic grid and per N-rooks slab",
-      .citation = "K. Chiu, P. Shirley and C. Wang, Multi-jittered sampling, Graphics Gems IV, 1994; A. Kensler, "
-                  "Correlated multi-jittered sampling, Pixar Technical Memo 13-01, 2013",
+      .citation =
+          "K. Chiu, P. Shirley and C. Wang, Multi-jittered sampling, Graphics Gems IV, 1994; A. Kensler, "
+          "Correlated multi-jittered sampling, Pixar Technical Memo 13-01, 2013",
       .takes_count = true,
       .params = {{.name = "correlated",
                   .default_value = 1,
@@ -86,15 +87,16 @@ const Method& multi_jittered_method() {
                   .max = 1,
                   .integer = true,
                   .help = "1: Kensler's correlated shuffle (one per axis); 0: Chiu et al.'s (one per column)"}},
-      .run = [](const GenerateRequest& r) {
-        return run_typed(r, [&](const auto& domain) {
-          const auto cells = strata_for_count(domain, *r.count);
-          MultiJitteredParams params;
-          std::copy(cells.begin(), cells.end(), params.cells.begin());
-          params.correlated = r.param("correlated", 1) != 0;
-          return multi_jittered(params, domain, r.seed);
-        });
-      },
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              const auto cells = strata_for_count(domain, *r.count);
+              MultiJitteredParams params;
+              std::copy(cells.begin(), cells.end(), params.cells.begin());
+              params.correlated = r.param("correlated", 1) != 0;
+              return multi_jittered(params, domain, r.seed);
+            });
+          },
   };
   return method;
 }

@@ -31,8 +31,8 @@ namespace pds {
 namespace {
 
 struct PrimitivePolynomial {
-  int degree;           // s
-  unsigned interior;    // a: the coefficients of x^(s-1) ... x^1, highest first
+  int degree;                            // s
+  unsigned interior;                     // a: the coefficients of x^(s-1) ... x^1, highest first
   std::array<std::uint32_t, 5> initial;  // m_1 ... m_s
 };
 
@@ -128,9 +128,15 @@ PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint6
     }
   };
   switch (params.scramble) {
-    case Scramble::none: walk(std::integral_constant<Scramble, Scramble::none>{}); break;
-    case Scramble::permute_digits: walk(std::integral_constant<Scramble, Scramble::permute_digits>{}); break;
-    case Scramble::owen: walk(std::integral_constant<Scramble, Scramble::owen>{}); break;
+    case Scramble::none:
+      walk(std::integral_constant<Scramble, Scramble::none>{});
+      break;
+    case Scramble::permute_digits:
+      walk(std::integral_constant<Scramble, Scramble::permute_digits>{});
+      break;
+    case Scramble::owen:
+      walk(std::integral_constant<Scramble, Scramble::owen>{});
+      break;
   }
   return points;
 }
@@ -142,19 +148,21 @@ const Method& sobol_method() {
   static const Method method{
       .name = "sobol",
       .summary = "Sobol sequence (Joe-Kuo direction numbers, Gray-code order), optionally Owen-scrambled",
-      .citation = "I. M. Sobol, On the distribution of points in a cube and the approximate evaluation of integrals, "
-                  "USSR Comput. Math. Math. Phys. 7(4), 1967; S. Joe and F. Y. Kuo, SIAM J. Sci. Comput. 30(5), 2008",
+      .citation =
+          "I. M. Sobol, On the distribution of points in a cube and the approximate evaluation of integrals, "
+          "USSR Comput. Math. Math. Phys. 7(4), 1967; S. Joe and F. Y. Kuo, SIAM J. Sci. Comput. 30(5), 2008",
       .takes_count = true,
       .deterministic = true,
       .params = {scramble_param(), first_param()},
-      .run = [](const GenerateRequest& r) {
-        return run_typed(r, [&](const auto& domain) {
-          const SobolParams params{.count = *r.count,
-                                   .first = static_cast<std::uint64_t>(r.param("first", 0)),
-                                   .scramble = scramble_from("sobol", static_cast<int>(r.param("scramble", 0)))};
-          return sobol(params, domain, r.seed);
-        });
-      },
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              const SobolParams params{.count = *r.count,
+                                       .first = static_cast<std::uint64_t>(r.param("first", 0)),
+                                       .scramble = scramble_from("sobol", static_cast<int>(r.param("scramble", 0)))};
+              return sobol(params, domain, r.seed);
+            });
+          },
   };
   return method;
 }

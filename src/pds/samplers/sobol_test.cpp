@@ -17,9 +17,14 @@ const Scramble kAllScrambles[] = {Scramble::none, Scramble::permute_digits, Scra
 TEST(Sobol, FirstPointsArePublishedValues) {
   // The first eight points of the 3D sequence as printed by Joe & Kuo's
   // generator and by MATLAB's sobolset(3) (Gray-code order).
-  const double expected[8][3] = {{0, 0, 0},           {0.5, 0.5, 0.5},     {0.75, 0.25, 0.25},
-                                 {0.25, 0.75, 0.75},  {0.375, 0.375, 0.625}, {0.875, 0.875, 0.125},
-                                 {0.625, 0.125, 0.875}, {0.125, 0.625, 0.375}};
+  const double expected[8][3] = {{0, 0, 0},
+                                 {0.5, 0.5, 0.5},
+                                 {0.75, 0.25, 0.25},
+                                 {0.25, 0.75, 0.75},
+                                 {0.375, 0.375, 0.625},
+                                 {0.875, 0.875, 0.125},
+                                 {0.625, 0.125, 0.875},
+                                 {0.125, 0.625, 0.375}};
   const auto points = sobol<3>({8}, Domain<3>::unit(), 0);
   ASSERT_EQ(points.size(), 8u);
   for (int i = 0; i < 8; ++i)
