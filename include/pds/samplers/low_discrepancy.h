@@ -15,6 +15,8 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "pds/domain.h"
 #include "pds/point.h"
@@ -203,95 +205,96 @@ Point<D> from_unit_cube(const Point<D>& u, const Domain<D>& domain) {
   return p;
 }
 
-/// Calls f(std::integral_constant<unsigned, kPrimes[axis]>{}) so that digit
-/// arithmetic divides by a compile-time constant.
-template <class F>
-decltype(auto) with_prime_base(int axis, F&& f) {
-  switch (axis) {
-    case 0:
-      return f(std::integral_constant<unsigned, kPrimes[0]>{});
-    case 1:
-      return f(std::integral_constant<unsigned, kPrimes[1]>{});
-    case 2:
-      return f(std::integral_constant<unsigned, kPrimes[2]>{});
-    case 3:
-      return f(std::integral_constant<unsigned, kPrimes[3]>{});
-    case 4:
-      return f(std::integral_constant<unsigned, kPrimes[4]>{});
-    case 5:
-      return f(std::integral_constant<unsigned, kPrimes[5]>{});
-    case 6:
-      return f(std::integral_constant<unsigned, kPrimes[6]>{});
-    default:
-      return f(std::integral_constant<unsigned, kPrimes[7]>{});
-  }
-}
-
 /// Radical inverses of consecutive indices in base B, with optional digit
-/// permutation, at a few operations per index: incrementing the index changes
-/// one digit plus its carries (on average B/(B-1) digits), and R follows by
-/// adding each changed digit's difference.
+/// permutation, at a table look-up, an addition and a division each. An index
+/// i = h L + l (L = B^k <= 1024) has R(i) = low[l] + high(h): the k low digits
+/// of i only set the k leading digits of R. low[] is tabulated once; high(h)
+/// is recomputed every L indices.
 template <unsigned B>
-class RadicalInverseCursor {
+class RadicalInverseWalk {
  public:
-  static constexpr int K = DigitScale<B>::digits;
+  static constexpr std::uint32_t kLow = [] {
+    std::uint32_t l = 1;
+    while (l * B <= 1024) l *= B;
+    return l;
+  }();
 
-  /// Starts at `index`; `perm` (may be null: no scrambling) must outlive the cursor.
-  RadicalInverseCursor(std::uint32_t index, const DigitPermutation<B>* perm) : perm_(perm) {
-    r_ = reverse_digits<B>(index);
-    if (perm_) r_ = perm_->apply(r_);
-    for (int k = 0; k < K; ++k) {
-      digit_[k] = static_cast<std::uint8_t>(index % B);
-      index /= B;
-    }
+  /// Starts at `index`; `perm` (null: no scrambling) must outlive the walk.
+  RadicalInverseWalk(std::uint32_t index, const DigitPermutation<B>* perm)
+      : perm_(perm), tail_(perm ? perm->tail() : 0.0), high_(index / kLow), low_index_(index % kLow) {
+    for (std::uint32_t l = 0; l < kLow; ++l) low_[l] = permuted(reverse_digits<B>(l));
+    high_r_ = high_part(high_);
   }
 
-  double value() const { return digits_to_unit<B>(r_, perm_ ? perm_->tail() : 0.0); }
-
-  /// Moves to the next index; the caller keeps the index below 2^32.
-  void advance() {
-    int k = 0;
-    while (digit_[k] == B - 1) {
-      r_ += (mapped(k, 0) - mapped(k, B - 1)) * weight(k);  // wraps modulo 2^64; the sum stays exact
-      digit_[k++] = 0;
+  /// The radical inverse of the current index; then moves to the next index.
+  double next() {
+    const double x = digits_to_unit<B>(low_[low_index_] + high_r_, tail_);
+    if (++low_index_ == kLow) {
+      low_index_ = 0;
+      high_r_ = high_part(++high_);
     }
-    r_ += (mapped(k, digit_[k] + 1) - mapped(k, digit_[k])) * weight(k);
-    ++digit_[k];
+    return x;
   }
 
  private:
-  std::uint64_t mapped(int k, unsigned d) const { return perm_ ? perm_->map(k, d) : d; }
-  static constexpr std::uint64_t weight(int k) { return kWeights[k]; }
-  static constexpr std::array<std::uint64_t, K> kWeights = [] {
-    std::array<std::uint64_t, K> w{};
-    w[K - 1] = 1;
-    for (int k = K - 2; k >= 0; --k) w[k] = w[k + 1] * B;
-    return w;
-  }();
+  std::uint64_t permuted(std::uint64_t r) const { return perm_ ? perm_->apply(r) : r; }
+  // The digits of h L, less the permuted zeros of its k low digits that low[] holds.
+  std::uint64_t high_part(std::uint64_t h) const {
+    const std::uint64_t index = h * kLow;
+    if (index >= (std::uint64_t{1} << 32)) return 0;  // past the last index: never read
+    return permuted(reverse_digits<B>(static_cast<std::uint32_t>(index))) - low_[0];
+  }
 
   const DigitPermutation<B>* perm_;
-  std::uint64_t r_;
-  std::array<std::uint8_t, K> digit_;
+  double tail_;
+  std::uint64_t high_;
+  std::uint32_t low_index_;
+  std::uint64_t high_r_ = 0;
+  std::array<std::uint64_t, kLow> low_;
 };
 
-/// Writes coordinate `axis` of points first, first+1, ..., first+count-1 of the
-/// base-B radical-inverse sequence, scrambled as asked, into out[i][axis].
-/// Unscrambled and digit-permuted runs walk the indices with a cursor; Owen
-/// scrambling hashes every digit of every point, so it costs K hashes a value.
-template <unsigned B, class Points>
-void fill_radical_inverse(Points& out, int axis, std::uint32_t first, Scramble scramble, std::uint64_t key) {
-  const std::size_t n = out.size();
+namespace detail {
+
+template <int D, int Lead, std::size_t... A, class LeadFn>
+void fill_radical_inverse_points(std::index_sequence<A...>, PointSet<D>& points, std::uint32_t first, Scramble scramble,
+                                 const std::array<std::uint64_t, D>& keys, const Domain<D>& domain, LeadFn& lead) {
+  const std::size_t n = points.size();
   if (scramble == Scramble::owen) {
-    for (std::size_t i = 0; i < n; ++i)
-      out[i][axis] = owen_scramble<B>(reverse_digits<B>(static_cast<std::uint32_t>(first + i)), key);
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto index = static_cast<std::uint32_t>(first + i);
+      Point<D> u;
+      lead(index, u);
+      ((u[Lead + A] = owen_scramble<kPrimes[A]>(reverse_digits<kPrimes[A]>(index), keys[Lead + A])), ...);
+      points[i] = from_unit_cube(u, domain);
+    }
     return;
   }
-  DigitPermutation<B> perm(key);
-  RadicalInverseCursor<B> cursor(first, scramble == Scramble::permute_digits ? &perm : nullptr);
+  const std::tuple<DigitPermutation<kPrimes[A]>...> perms{DigitPermutation<kPrimes[A]>(keys[Lead + A])...};
+  const bool permute = scramble == Scramble::permute_digits;
+  std::tuple<RadicalInverseWalk<kPrimes[A]>...> walks{
+      RadicalInverseWalk<kPrimes[A]>(first, permute ? &std::get<A>(perms) : nullptr)...};
   for (std::size_t i = 0; i < n; ++i) {
-    out[i][axis] = cursor.value();
-    if (i + 1 < n) cursor.advance();
+    Point<D> u;
+    lead(static_cast<std::uint32_t>(first + i), u);
+    ((u[Lead + A] = std::get<A>(walks).next()), ...);
+    points[i] = from_unit_cube(u, domain);
   }
+}
+
+}  // namespace detail
+
+/// Fills points[i] with point first + i of a radical-inverse construction:
+/// axes Lead ... D-1 are the radical inverses of the index in bases 2, 3, 5,
+/// ... (scrambled as asked, axis a with keys[a]), axes below Lead are set by
+/// lead(index, u) (Hammersley's i / N); then the unit cube is mapped to the
+/// domain. Unscrambled and digit-permuted runs walk the indices (RadicalInverseWalk);
+/// Owen scrambling hashes every digit of every coordinate (K hashes a value).
+template <int D, int Lead = 0, class LeadFn>
+void fill_radical_inverse_points(PointSet<D>& points, std::uint32_t first, Scramble scramble,
+                                 const std::array<std::uint64_t, D>& keys, const Domain<D>& domain, LeadFn&& lead) {
+  static_assert(D - Lead <= static_cast<int>(kPrimes.size()));
+  detail::fill_radical_inverse_points<D, Lead>(std::make_index_sequence<D - Lead>{}, points, first, scramble, keys,
+                                               domain, lead);
 }
 
 /// Maps every point of a set built in the unit cube to the domain, in place.

@@ -24,13 +24,11 @@ template <int D>
 PointSet<D> halton(const HaltonParams& params, const Domain<D>& domain, std::uint64_t seed) {
   static_assert(D <= static_cast<int>(kPrimes.size()));
   require_index_range("halton", params.first, params.count);
+  std::array<std::uint64_t, D> keys;
+  for (int a = 0; a < D; ++a) keys[a] = scramble_key(seed, 1, a);
   PointSet<D> points(params.count);
-  const auto first = static_cast<std::uint32_t>(params.first);
-  for (int axis = 0; axis < D; ++axis)
-    with_prime_base(axis, [&](auto base) {
-      fill_radical_inverse<decltype(base)::value>(points, axis, first, params.scramble, scramble_key(seed, 1, axis));
-    });
-  map_to_domain(points, domain);
+  fill_radical_inverse_points<D>(points, static_cast<std::uint32_t>(params.first), params.scramble, keys, domain,
+                                 [](std::uint32_t, Point<D>&) {});
   return points;
 }
 

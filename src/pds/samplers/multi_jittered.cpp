@@ -54,6 +54,7 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
       shuffle.insert(shuffle.end(), p.begin(), p.end());
     }
     Rng jitter(seed, {1, static_cast<std::uint64_t>(k)});
+    const SlabJitter within(n);
     std::array<std::uint32_t, D> cell{};
     for (auto& p : points) {
       std::uint64_t r = 0;  // the other coordinates of the cell, mixed radix, highest axis first
@@ -62,7 +63,7 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
       const std::uint32_t column = cell[k];
       const std::uint64_t slab =
           std::uint64_t{column} * m + shuffle[(params.correlated ? 0 : column) * std::uint64_t{m} + r];
-      p[k] = slab_coordinate(slab, n, jitter);
+      p[k] = within(slab, jitter);
       for (int l = 0; l < D && ++cell[l] == static_cast<std::uint32_t>(params.cells[l]); ++l) cell[l] = 0;
     }
   }

@@ -106,8 +106,7 @@ PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint6
     tail[a] = perm.tail();
   }
 
-  PointSet<D> points;
-  points.reserve(params.count);  // no zero-filling pass: every point is written once
+  PointSet<D> points(params.count);
   // One loop per scrambling, so that the choice is not re-made per coordinate.
   auto walk = [&](auto mode) {
     constexpr Scramble scramble = decltype(mode)::value;
@@ -121,7 +120,7 @@ PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint6
         else
           u[a] = owen_scramble<2>(x[a], key[a]);
       }
-      points.push_back(from_unit_cube(u, domain));
+      points[i] = from_unit_cube(u, domain);
       const int bit = std::countr_zero(static_cast<std::uint32_t>(first + i + 1));  // 32 after the last index
       if (bit < 32)
         for (int a = 0; a < D; ++a) x[a] ^= v[a][bit];
