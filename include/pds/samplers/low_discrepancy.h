@@ -168,12 +168,14 @@ double owen_scramble(std::uint64_t r, std::uint64_t key) {
   constexpr int K = DigitScale<B>::digits;
   std::uint64_t out = 0;
   if constexpr (B == 2) {
-    // A node at depth k is (1 << k) | its prefix: unique over all depths.
+    // A node at depth k is (1 << k) | its prefix: unique over all depths. The
+    // flips are independent of each other, so they are gathered into one mask.
+    std::uint64_t flips = 0;
     for (int k = 0; k < K; ++k) {
-      const std::uint64_t prefix = r >> (K - k);
-      const std::uint64_t flip = mix64(key ^ ((std::uint64_t{1} << k) | prefix)) >> 63;
-      out = (out << 1) | (((r >> (K - 1 - k)) & 1) ^ flip);
+      const std::uint64_t node = (std::uint64_t{1} << k) | (r >> (K - k));
+      flips |= (mix64(key ^ node) >> 63) << (K - 1 - k);
     }
+    out = r ^ flips;
   } else {
     std::array<std::uint8_t, K> digit;
     std::uint64_t rest = r;
