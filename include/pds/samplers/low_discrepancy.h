@@ -160,7 +160,8 @@ class DigitPermutation {
 };
 
 /// Owen's nested uniform scrambling of R (Owen 1995): digit k goes through a
-/// random permutation chosen by hashing (key, k, the k digits above it), so
+/// random permutation chosen by hashing (key, k, the k digits above it) (in
+/// base 2 one hash covers 6 levels of the digit tree), so
 /// points that share a leading digit prefix are permuted alike and the net
 /// structure survives. Below the K-th digit every point's prefix is unique,
 /// so the remaining digits of a nested scrambling are independent uniform
@@ -170,12 +171,21 @@ double owen_scramble(std::uint64_t r, std::uint64_t key) {
   constexpr int K = DigitScale<B>::digits;
   std::uint64_t out = 0;
   if constexpr (B == 2) {
-    // A node at depth k is (1 << k) | its prefix: unique over all depths. The
-    // flips are independent of each other, so they are gathered into one mask.
+    // One 64-bit hash serves a whole subtree of 6 levels: the subtree's root
+    // (depth top, named (1 << top) | prefix, unique over all depths) is hashed
+    // and its 63 nodes take bits 1 ... 63 of the hash in heap order (child of
+    // j with digit d: 2j + d). Every node still gets its own uniform bit, at a
+    // sixth of the hashes of one hash per node.
+    constexpr int kLevels = 6;
     std::uint64_t flips = 0;
-    for (int k = 0; k < K; ++k) {
-      const std::uint64_t node = (std::uint64_t{1} << k) | (r >> (K - k));
-      flips |= (mix64(key ^ node) >> 63) << (K - 1 - k);
+    for (int top = 0; top < K; top += kLevels) {
+      const std::uint64_t h = mix64(key ^ ((std::uint64_t{1} << top) | (r >> (K - top))));
+      std::uint64_t node = 1;
+      for (int k = top; k < top + kLevels && k < K; ++k) {
+        const std::uint64_t digit = (r >> (K - 1 - k)) & 1;
+        flips |= ((h >> node) & 1) << (K - 1 - k);
+        node = 2 * node + digit;
+      }
     }
     out = r ^ flips;
   } else {
@@ -292,7 +302,7 @@ void fill_radical_inverse_points(std::index_sequence<A...>, PointSet<D>& points,
 /// ... (scrambled as asked, axis a with keys[a]), axes below Lead are set by
 /// lead(index, u) (Hammersley's i / N); then the unit cube is mapped to the
 /// domain. Unscrambled and digit-permuted runs walk the indices (RadicalInverseWalk);
-/// Owen scrambling hashes every digit of every coordinate (K hashes a value).
+/// Owen scrambling walks every digit of every coordinate (owen_scramble).
 template <int D, int Lead = 0, class LeadFn>
 void fill_radical_inverse_points(PointSet<D>& points, std::uint32_t first, Scramble scramble,
                                  const std::array<std::uint64_t, D>& keys, const Domain<D>& domain, LeadFn&& lead) {

@@ -12,7 +12,8 @@
 // Guarantees: the first N points have star discrepancy O(log^D N / N); in 2D
 // the first 2^a 3^b points stratify the 2^a x 3^b grid exactly.
 // Complexity: O(count * D), a few operations a coordinate; Owen scrambling
-// hashes each of the K digits of a coordinate (K = 32, 21, 14 for bases 2, 3, 5).
+// walks the K digits of a coordinate (K = 32, 21, 14 for bases 2, 3, 5) with a
+// hash per node (base 2: per 6 levels).
 // Limits: indices below 2^32; higher axes (large primes) correlate visibly in
 // short prefixes, which is why renderers scramble them.
 

@@ -15,7 +15,7 @@
 // direct computation of its first point.
 // Guarantees: see sobol.h; in 2D the sequence is a (0, 2)-sequence in base 2.
 // Complexity: O(count * D), about one XOR, one conversion and one multiply-add
-// a coordinate unscrambled; Owen scrambling hashes each of 32 bits.
+// a coordinate unscrambled; Owen scrambling walks all 32 bits (6 hashes).
 // Limits: indices below 2^32 (32-bit direction numbers); up to kSobolMaxDim axes.
 // Why not GSL's gsl_qrng_sobol: it only steps forward from the start (no
 // random access to a range), has no scrambling, and costs a call per point;
