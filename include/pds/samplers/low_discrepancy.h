@@ -160,10 +160,9 @@ class DigitPermutation {
 };
 
 /// Owen's nested uniform scrambling of R (Owen 1995): digit k goes through a
-/// random permutation chosen by hashing (key, k, the k digits above it) (in
-/// base 2 one hash covers 6 levels of the digit tree), so
+/// random permutation chosen by hashing (key, k, the k digits above it), so
 /// points that share a leading digit prefix are permuted alike and the net
-/// structure survives. Below the K-th digit every point's prefix is unique,
+/// structure survives (in base 2 one hash covers 6 levels of the digit tree). Below the K-th digit every point's prefix is unique,
 /// so the remaining digits of a nested scrambling are independent uniform
 /// digits; they are drawn as one uniform tail from the hash of the full prefix.
 template <unsigned B>

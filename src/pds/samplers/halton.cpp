@@ -14,6 +14,9 @@
 // Complexity: O(count * D), a few operations a coordinate; Owen scrambling
 // walks the K digits of a coordinate (K = 32, 21, 14 for bases 2, 3, 5) with a
 // hash per node (base 2: per 6 levels).
+// Why not GSL's gsl_qrng_halton: it only steps forward from index 1, has no
+// scrambling and sums digits in floating point (a few ulps off the exact
+// values); the tests use it as a reference.
 // Limits: indices below 2^32; higher axes (large primes) correlate visibly in
 // short prefixes, which is why renderers scramble them.
 
