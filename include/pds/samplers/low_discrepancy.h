@@ -11,6 +11,7 @@
 // rounding. Only the final conversion to double rounds (correctly, by one
 // division), so the unscrambled sequences are exact to the last bit.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -162,9 +163,9 @@ class DigitPermutation {
 /// Owen's nested uniform scrambling of R (Owen 1995): digit k goes through a
 /// random permutation chosen by hashing (key, k, the k digits above it), so
 /// points that share a leading digit prefix are permuted alike and the net
-/// structure survives (in base 2 one hash covers 6 levels of the digit tree). Below the K-th digit every point's prefix is unique,
-/// so the remaining digits of a nested scrambling are independent uniform
-/// digits; they are drawn as one uniform tail from the hash of the full prefix.
+/// structure survives (in base 2 one hash covers 6 levels of the digit tree). Below the K-th digit every point's prefix
+/// is unique, so the remaining digits of a nested scrambling are independent uniform digits; they are drawn as one
+/// uniform tail from the hash of the full prefix.
 template <unsigned B>
 double owen_scramble(std::uint64_t r, std::uint64_t key) {
   constexpr int K = DigitScale<B>::digits;
@@ -207,15 +208,34 @@ double owen_scramble(std::uint64_t r, std::uint64_t key) {
   return digits_to_unit<B>(out, tail);
 }
 
-/// The point u of the unit cube mapped to the domain's box; always in [lo, hi).
+/// The map from the unit cube to a domain's box, x = lo + u (hi - lo), with a
+/// result that rounds up to hi (or past it, if hi - lo rounded up) moved to
+/// the largest double below hi: always in [lo, hi). Set up once per set.
+template <int D>
+class UnitCubeMap {
+ public:
+  explicit UnitCubeMap(const Domain<D>& domain) {
+    for (int i = 0; i < D; ++i) {
+      lo_[i] = domain.lo[i];
+      extent_[i] = domain.extent(i);
+      top_[i] = std::nextafter(domain.hi[i], domain.lo[i]);
+    }
+  }
+  double operator()(int axis, double u) const { return std::min(lo_[axis] + u * extent_[axis], top_[axis]); }
+  Point<D> operator()(const Point<D>& u) const {
+    Point<D> p;
+    for (int i = 0; i < D; ++i) p[i] = (*this)(i, u[i]);
+    return p;
+  }
+
+ private:
+  std::array<double, D> lo_, extent_, top_;
+};
+
+/// The point u of the unit cube mapped to the domain's box (UnitCubeMap).
 template <int D>
 Point<D> from_unit_cube(const Point<D>& u, const Domain<D>& domain) {
-  Point<D> p;
-  for (int i = 0; i < D; ++i) {
-    const double x = domain.lo[i] + u[i] * domain.extent(i);
-    p[i] = x < domain.hi[i] ? x : std::nextafter(domain.hi[i], domain.lo[i]);
-  }
-  return p;
+  return UnitCubeMap<D>(domain)(u);
 }
 
 /// Radical inverses of consecutive indices in base B, with optional digit
@@ -272,13 +292,14 @@ template <int D, int Lead, std::size_t... A, class LeadFn>
 void fill_radical_inverse_points(std::index_sequence<A...>, PointSet<D>& points, std::uint32_t first, Scramble scramble,
                                  const std::array<std::uint64_t, D>& keys, const Domain<D>& domain, LeadFn& lead) {
   const std::size_t n = points.size();
+  const UnitCubeMap<D> to_domain(domain);
   if (scramble == Scramble::owen) {
     for (std::size_t i = 0; i < n; ++i) {
       const auto index = static_cast<std::uint32_t>(first + i);
       Point<D> u;
       lead(index, u);
       ((u[Lead + A] = owen_scramble<kPrimes[A]>(reverse_digits<kPrimes[A]>(index), keys[Lead + A])), ...);
-      points[i] = from_unit_cube(u, domain);
+      points[i] = to_domain(u);
     }
     return;
   }
@@ -290,7 +311,7 @@ void fill_radical_inverse_points(std::index_sequence<A...>, PointSet<D>& points,
     Point<D> u;
     lead(static_cast<std::uint32_t>(first + i), u);
     ((u[Lead + A] = std::get<A>(walks).next()), ...);
-    points[i] = from_unit_cube(u, domain);
+    points[i] = to_domain(u);
   }
 }
 
@@ -313,7 +334,8 @@ void fill_radical_inverse_points(PointSet<D>& points, std::uint32_t first, Scram
 /// Maps every point of a set built in the unit cube to the domain, in place.
 template <int D>
 void map_to_domain(PointSet<D>& points, const Domain<D>& domain) {
-  for (auto& p : points) p = from_unit_cube(p, domain);
+  const UnitCubeMap<D> to_domain(domain);
+  for (auto& p : points) p = to_domain(p);
 }
 
 }  // namespace pds

@@ -58,6 +58,7 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
     jitter.emplace_back(seed, std::initializer_list<std::uint64_t>{1, static_cast<std::uint64_t>(k)});
   }
   const SlabJitter within(n);
+  const UnitCubeMap<D> to_domain(domain);
   PointSet<D> points(n);
   std::array<std::uint32_t, D> cell{};
   for (auto& p : points) {
@@ -70,7 +71,7 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
       const std::uint64_t slab = column * m[k] + shuffle[k][(params.correlated ? 0 : column) * m[k] + r];
       u[k] = within(slab, jitter[k]);
     }
-    p = from_unit_cube(u, domain);
+    p = to_domain(u);
     for (int l = 0; l < D && ++cell[l] == static_cast<std::uint32_t>(params.cells[l]); ++l) cell[l] = 0;
   }
   return points;

@@ -106,21 +106,22 @@ PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint6
     tail[a] = perm.tail();
   }
 
+  const UnitCubeMap<D> to_domain(domain);
   PointSet<D> points(params.count);
   // One loop per scrambling, so that the choice is not re-made per coordinate.
   auto walk = [&](auto mode) {
     constexpr Scramble scramble = decltype(mode)::value;
-    Point<D> u;
     for (std::uint64_t i = 0; i < params.count; ++i) {
       for (int a = 0; a < D; ++a) {
+        double u;
         if constexpr (scramble == Scramble::none)
-          u[a] = x[a] * 0x1.0p-32;
+          u = x[a] * 0x1.0p-32;
         else if constexpr (scramble == Scramble::permute_digits)
-          u[a] = digits_to_unit<2>(x[a] ^ shift[a], tail[a]);
+          u = digits_to_unit<2>(x[a] ^ shift[a], tail[a]);
         else
-          u[a] = owen_scramble<2>(x[a], key[a]);
+          u = owen_scramble<2>(x[a], key[a]);
+        points[i][a] = to_domain(a, u);
       }
-      points[i] = from_unit_cube(u, domain);
       const int bit = std::countr_zero(static_cast<std::uint32_t>(first + i + 1));  // 32 after the last index
       if (bit < 32)
         for (int a = 0; a < D; ++a) x[a] ^= v[a][bit];
