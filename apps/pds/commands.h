@@ -12,6 +12,7 @@ namespace pds::cli {
 void add_generate(CLI::App& app);
 void add_analyze(CLI::App& app);
 void add_methods(CLI::App& app);
+void add_compare(CLI::App& app);
 
 /// Options every command that takes a domain shares.
 struct DomainOptions {

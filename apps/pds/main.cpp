@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   pds::cli::add_generate(app);
   pds::cli::add_analyze(app);
   pds::cli::add_methods(app);
+  pds::cli::add_compare(app);
   try {
     app.parse(argc, argv);
     return 0;

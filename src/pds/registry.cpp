@@ -7,10 +7,15 @@
 #include "pds/error.h"
 #include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/dunbar_humphreys.h"
+#include "pds/samplers/halton.h"
+#include "pds/samplers/hammersley.h"
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/jones.h"
+#include "pds/samplers/latin_hypercube.h"
+#include "pds/samplers/multi_jittered.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/regular.h"
+#include "pds/samplers/sobol.h"
 #include "pds/samplers/wei.h"
 
 namespace pds {
@@ -21,6 +26,11 @@ std::span<const Method> methods() {
       white_noise_method(),
       regular_method(),
       jittered_method(),
+      halton_method(),
+      hammersley_method(),
+      sobol_method(),
+      multi_jittered_method(),
+      latin_hypercube_method(),
       dart_throwing_method(),
       dunbar_humphreys_method(),
       wei_method(),
