@@ -65,6 +65,25 @@ TEST(Jones, PrefixHasTheLawOfDartThrowing) {
   EXPECT_LT(std::abs(testing_stats::welch_t(jf, df)), testing_stats::kMaxT);
 }
 
+// The same comparison on the radially averaged power spectrum: 48 annuli (up
+// to 1.3 times the frequency of the mean spacing, past the blue-noise peak),
+// one spectrum per set, Welch t per annulus.
+TEST(Jones, PrefixSpectrumMatchesDartThrowing) {
+  const double r = 0.02;
+  const auto domain = Domain<2>::unit(true);
+  const std::size_t n = 1400;
+  std::vector<std::vector<double>> jones_spectra, dart_spectra;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    auto points = jones({r}, domain, seed);
+    points.resize(n);
+    jones_spectra.push_back(testing_stats::radial_power(points, domain, 48));
+    DartThrowingParams dart{r};
+    dart.count = n;
+    dart_spectra.push_back(testing_stats::radial_power(dart_throwing(dart, domain, 100 + seed), domain, 48));
+  }
+  EXPECT_LT(testing_stats::max_spectrum_t(jones_spectra, dart_spectra), testing_stats::kMaxSpectrumT);
+}
+
 // Saturated random sequential adsorption of disks of diameter r covers a
 // fraction 0.5470735 of the plane (Zhang & Torquato, PRE 88, 2013), i.e.
 // 0.5470735 / (pi r^2 / 4) samples per unit area, rho = 0.7776. The count

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "nn_statistics.h"
@@ -113,6 +114,32 @@ TEST(Wei, DefaultsMatchMaximalDartThrowing) {
   EXPECT_LT(std::abs(testing_stats::welch_t(wn, jn)), testing_stats::kMaxT);
   EXPECT_LT(std::abs(testing_stats::welch_t(wm, jm)), testing_stats::kMaxT);
   EXPECT_LT(std::abs(testing_stats::welch_t(wf, jf)), testing_stats::kMaxT);
+}
+
+// And on the radially averaged power spectrum below the phase-group
+// frequency. The groups repeat every 3 level-0 cells, and that lattice shows
+// as peaks at n0/3 cycles per extent and its harmonics (here n0 = 71: peaks
+// near 24, 34 and 47; docs/wei.md). Below it, where clustering would show, the
+// power must match maximal dart throwing's: annuli 1-21, Welch t each.
+TEST(Wei, DefaultSpectrumBelowThePhaseLatticeMatchesMaximalDartThrowing) {
+  const double r = 0.02;
+  const auto domain = Domain<2>::unit(true);
+  const int cells = static_cast<int>(std::ceil(std::sqrt(2.0) / r));  // level-0 cells per axis
+  ASSERT_EQ(cells, 71);
+  std::vector<std::vector<double>> wei_spectra, jones_spectra;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    WeiParams params;
+    params.radius = r;
+    wei_spectra.push_back(testing_stats::radial_power(wei<2>(params, domain, seed), domain, 48));
+    jones_spectra.push_back(testing_stats::radial_power(jones({r}, domain, 100 + seed), domain, 48));
+  }
+  EXPECT_LT(testing_stats::max_spectrum_t(wei_spectra, jones_spectra, cells / 3 - 2), testing_stats::kMaxSpectrumT);
+  // The lattice itself: the annulus at n0/3 carries clearly more power.
+  std::vector<double> at_lattice_wei, at_lattice_jones;
+  // Index cells / 3 = 23 is annulus 24: frequencies 23.5 to 24.5 cycles per extent.
+  for (const auto& s : wei_spectra) at_lattice_wei.push_back(s[cells / 3]);
+  for (const auto& s : jones_spectra) at_lattice_jones.push_back(s[cells / 3]);
+  EXPECT_GT(testing_stats::welch_t(at_lattice_wei, at_lattice_jones), testing_stats::kMaxT);
 }
 
 }  // namespace
