@@ -4,6 +4,7 @@
 // input, pds::Failure otherwise) and turned into exit codes by main().
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,9 @@ namespace pds::cli {
 
 void add_generate(CLI::App& app);
 void add_analyze(CLI::App& app);
+void add_tile(CLI::App& app);
+void add_render(CLI::App& app);
+void add_render_sheet(CLI::App& app);
 
 /// Options every command that takes a domain shares.
 struct DomainOptions {
@@ -25,6 +29,9 @@ void add_domain_options(CLI::App& command, DomainOptions& options, bool dim_opti
 
 /// Splits --bounds into lo and hi for the dimension; empty means the unit box.
 void split_bounds(const DomainOptions& options, int dim, std::vector<double>& lo, std::vector<double>& hi);
+
+/// Parses repeated --param NAME=NUMBER items.
+std::map<std::string, double> parse_params(const std::vector<std::string>& items);
 
 /// The text listing every registered method, for --help.
 std::string methods_help();

@@ -1,3 +1,4 @@
+#include <charconv>
 #include <sstream>
 
 #include "commands.h"
@@ -23,6 +24,21 @@ void split_bounds(const DomainOptions& options, int dim, std::vector<double>& lo
                           " (lo corner then hi corner), got " + std::to_string(options.bounds.size()));
   lo.assign(options.bounds.begin(), options.bounds.begin() + dim);
   hi.assign(options.bounds.begin() + dim, options.bounds.end());
+}
+
+std::map<std::string, double> parse_params(const std::vector<std::string>& items) {
+  std::map<std::string, double> params;
+  for (const std::string& item : items) {
+    const auto eq = item.find('=');
+    double value = 0;
+    const char* begin = item.data() + (eq == std::string::npos ? 0 : eq + 1);
+    const char* end = item.data() + item.size();
+    const auto [ptr, ec] = std::from_chars(begin, end, value);
+    if (eq == std::string::npos || eq == 0 || ec != std::errc() || ptr != end)
+      throw InvalidArgument("--param expects NAME=NUMBER, got '" + item + "'");
+    params[item.substr(0, eq)] = value;
+  }
+  return params;
 }
 
 std::string methods_help() {

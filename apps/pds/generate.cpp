@@ -24,21 +24,6 @@ struct GenerateOptions {
   std::string dtype = "float64";
 };
 
-std::map<std::string, double> parse_params(const std::vector<std::string>& items) {
-  std::map<std::string, double> params;
-  for (const std::string& item : items) {
-    const auto eq = item.find('=');
-    double value = 0;
-    const char* begin = item.data() + (eq == std::string::npos ? 0 : eq + 1);
-    const char* end = item.data() + item.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (eq == std::string::npos || eq == 0 || ec != std::errc() || ptr != end)
-      throw InvalidArgument("--param expects NAME=NUMBER, got '" + item + "'");
-    params[item.substr(0, eq)] = value;
-  }
-  return params;
-}
-
 }  // namespace
 
 void add_generate(CLI::App& app) {

@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
   app.footer(pds::cli::methods_help());
   pds::cli::add_generate(app);
   pds::cli::add_analyze(app);
+  pds::cli::add_tile(app);
+  pds::cli::add_render(app);
+  pds::cli::add_render_sheet(app);
   try {
     app.parse(argc, argv);
     return 0;
