@@ -5,9 +5,14 @@
 #include <sstream>
 
 #include "pds/error.h"
+#include "pds/samplers/halton.h"
+#include "pds/samplers/hammersley.h"
 #include "pds/samplers/jittered.h"
+#include "pds/samplers/latin_hypercube.h"
+#include "pds/samplers/multi_jittered.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/regular.h"
+#include "pds/samplers/sobol.h"
 
 namespace pds {
 
@@ -17,6 +22,11 @@ std::span<const Method> methods() {
       white_noise_method(),
       regular_method(),
       jittered_method(),
+      halton_method(),
+      hammersley_method(),
+      sobol_method(),
+      multi_jittered_method(),
+      latin_hypercube_method(),
   };
   return table;
 }

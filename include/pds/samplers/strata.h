@@ -19,8 +19,15 @@ inline constexpr double kMaxStratumAspect = 2.0;
 template <int D>
 std::array<int, D> strata_for_count(const Domain<D>& domain, std::uint64_t count);
 
-/// Cells per axis with edge at least `spacing` (floor(extent / spacing), at
-/// least 1), so that cell centres are at least `spacing` apart.
+/// Centre of cell j of n along one axis. The regular grid's points are these.
+template <int D>
+double stratum_centre(const Domain<D>& domain, int axis, int j, int n) {
+  return domain.lo[axis] + (j + 0.5) * (domain.extent(axis) / n);
+}
+
+/// Cells per axis, as many as fit (at most floor(extent / spacing), at least
+/// 1), such that the computed cell centres (stratum_centre) are at least
+/// `spacing` apart in floating point, across the seam on a torus too.
 template <int D>
 std::array<int, D> strata_for_spacing(const Domain<D>& domain, double spacing);
 

@@ -19,7 +19,7 @@ PointSet<D> regular(const RegularParams& params, const Domain<D>& domain) {
   PointSet<D> points(total);
   std::array<int, D> index{};
   for (auto& p : points) {
-    for (int i = 0; i < D; ++i) p[i] = domain.lo[i] + (index[i] + 0.5) * (domain.extent(i) / params.cells[i]);
+    for (int i = 0; i < D; ++i) p[i] = stratum_centre(domain, i, index[i], params.cells[i]);
     for (int i = 0; i < D && ++index[i] == params.cells[i]; ++i) index[i] = 0;
   }
   return points;

@@ -99,6 +99,16 @@ std::array<int, D> strata_for_spacing(const Domain<D>& domain, double spacing) {
     if (n > static_cast<double>(std::numeric_limits<int>::max()))
       throw InvalidArgument("spacing " + std::to_string(spacing) + " is too small for the domain");
     cells[i] = std::max(1, static_cast<int>(n));
+    // Rounding can put two centres a hair closer than extent / n: drop cells
+    // until every computed gap holds.
+    auto gaps_hold = [&](int m) {
+      if (m == 1) return true;
+      for (int j = 0; j + 1 < m; ++j)
+        if (stratum_centre(domain, i, j + 1, m) - stratum_centre(domain, i, j, m) < spacing) return false;
+      return !domain.periodic ||
+             std::abs(domain.delta(stratum_centre(domain, i, m - 1, m), stratum_centre(domain, i, 0, m), i)) >= spacing;
+    };
+    while (!gaps_hold(cells[i])) --cells[i];
   }
   return cells;
 }

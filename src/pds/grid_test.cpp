@@ -1,0 +1,85 @@
+#include "pds/grid.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "pds/rng.h"
+#include "pds/samplers/random.h"
+
+namespace pds {
+namespace {
+
+// Every neighbour query of the grid equals the brute-force answer, for points
+// near the faces and corners, on boxes and tori, with radii around and above
+// the cell size.
+template <int D>
+void check_against_brute_force(const Domain<D>& domain, double grid_radius, std::uint64_t seed) {
+  const PointSet<D> points = white_noise<D>({400}, domain, seed);
+  Grid<D> grid = Grid<D>::for_radius(domain, grid_radius);
+  for (const auto& p : points) grid.insert(p);
+  ASSERT_EQ(grid.size(), points.size());
+  for (int i = 0; i < D; ++i) EXPECT_LE(grid.cell_edge(i), grid_radius / std::sqrt(double(D)) * (1 + 1e-12));
+
+  Rng rng(seed + 1);
+  for (int q = 0; q < 200; ++q) {
+    Point<D> p = uniform_point(rng, domain);
+    if (q % 4 == 0) p[0] = domain.lo[0];                              // on a face
+    if (q % 4 == 1) p[D - 1] = std::nextafter(domain.hi[D - 1], 0.0);  // on the far face
+    for (double r : {0.5 * grid_radius, grid_radius, 2.7 * grid_radius, 0.6 * domain.extent(0)}) {
+      std::vector<int> found, expected;
+      grid.for_each_within(p, r, [&](std::int32_t i, double d2) {
+        EXPECT_DOUBLE_EQ(d2, domain.distance2(p, points[i]));
+        found.push_back(i);
+        return true;
+      });
+      for (std::size_t i = 0; i < points.size(); ++i)
+        if (domain.distance2(p, points[i]) <= r * r) expected.push_back(static_cast<int>(i));
+      std::sort(found.begin(), found.end());
+      EXPECT_EQ(found, expected) << domain << " query " << p << " r " << r;
+      EXPECT_EQ(grid.any_closer_than(p, r), std::any_of(expected.begin(), expected.end(), [&](int i) {
+                  return domain.distance2(p, points[i]) < r * r;
+                }));
+    }
+  }
+}
+
+TEST(Grid, MatchesBruteForceOnBoxAndTorus2D) {
+  check_against_brute_force<2>(Domain<2>::unit(false), 0.07, 1);
+  check_against_brute_force<2>(Domain<2>::unit(true), 0.07, 2);
+  check_against_brute_force<2>(Domain<2>::torus({-2, 1}, {1, 2.5}), 0.13, 3);
+}
+
+TEST(Grid, MatchesBruteForceOnBoxAndTorus3D) {
+  check_against_brute_force<3>(Domain<3>::unit(false), 0.15, 4);
+  check_against_brute_force<3>(Domain<3>::unit(true), 0.15, 5);
+  check_against_brute_force<3>(Domain<3>::box({0, 0, 0}, {2, 1, 0.5}), 0.2, 6);
+}
+
+TEST(Grid, CellsDivideTheTorusPeriodExactly) {
+  const auto torus = Domain<2>::torus({0, 0}, {1, 3});
+  const auto grid = Grid<2>::for_radius(torus, 0.1);
+  for (int i = 0; i < 2; ++i) EXPECT_DOUBLE_EQ(grid.cell_edge(i) * grid.cells(i), torus.extent(i));
+}
+
+TEST(Grid, FindsANeighbourExactlyAcrossTheSeam) {
+  const auto torus = Domain<2>::unit(true);
+  Grid<2> grid = Grid<2>::for_radius(torus, 0.1);
+  grid.insert({0.995, 0.5});
+  EXPECT_TRUE(grid.any_closer_than({0.005, 0.5}, 0.0100001));
+  EXPECT_FALSE(grid.any_closer_than({0.005, 0.5}, 0.0099999));
+  Grid<2> box = Grid<2>::for_radius(Domain<2>::unit(false), 0.1);
+  box.insert({0.995, 0.5});
+  EXPECT_FALSE(box.any_closer_than({0.005, 0.5}, 0.1));
+}
+
+TEST(Grid, RefusesAGridThatWouldNotFitInMemory) {
+  EXPECT_THROW(Grid<2>::for_radius(Domain<2>::unit(), 1e-9), InvalidArgument);
+  EXPECT_THROW(Grid<3>::for_radius(Domain<3>::unit(), 1e-4), InvalidArgument);
+  EXPECT_THROW(Grid<2>(Domain<2>::unit(), 0.0), InvalidArgument);
+  EXPECT_THROW(Grid<2>(Domain<2>::unit(), NAN), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace pds

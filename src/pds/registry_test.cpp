@@ -1,0 +1,115 @@
+#include "pds/registry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "pds/error.h"
+
+namespace pds {
+namespace {
+
+// generate() must reject the request with a message containing `fragment`.
+void expect_rejected(const std::string& method, const GenerateRequest& r, const std::string& fragment) {
+  try {
+    generate(method, r);
+    ADD_FAILURE() << method << ": accepted, expected an error mentioning '" << fragment << "'";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+GenerateRequest with_count(std::uint64_t n) {
+  GenerateRequest r;
+  r.count = n;
+  return r;
+}
+
+GenerateRequest with_radius(double radius) {
+  GenerateRequest r;
+  r.radius = radius;
+  return r;
+}
+
+TEST(Registry, NamesAreUniqueAndEveryEntryIsComplete) {
+  std::set<std::string> names;
+  for (const Method& m : methods()) {
+    EXPECT_TRUE(names.insert(m.name).second) << m.name;
+    EXPECT_FALSE(m.summary.empty()) << m.name;
+    EXPECT_TRUE(m.takes_count || m.takes_radius) << m.name;
+    EXPECT_NE(m.run, nullptr) << m.name;
+    for (const MethodParam& p : m.params) {
+      EXPECT_LE(p.min, p.default_value) << m.name << " " << p.name;
+      EXPECT_LE(p.default_value, p.max) << m.name << " " << p.name;
+      EXPECT_FALSE(p.help.empty()) << m.name << " " << p.name;
+    }
+  }
+  for (const char* name : {"random", "regular", "jittered"}) EXPECT_TRUE(names.count(name)) << name;
+  expect_rejected("no-such-method", with_count(10), "unknown method 'no-such-method' (known: random");
+}
+
+TEST(Registry, RejectsBadRadii) {
+  for (double r : {0.0, -0.1, double(NAN), double(INFINITY), -double(INFINITY)})
+    expect_rejected("regular", with_radius(r), "radius must be positive and finite");
+  expect_rejected("random", with_radius(0.1), "random does not take --radius");
+}
+
+TEST(Registry, RejectsBadCounts) {
+  expect_rejected("random", with_count(0), "count must be at least 1, got 0");
+  GenerateRequest r = with_count(1001);
+  r.max_points = 1000;
+  expect_rejected("random", r, "count 1001 is above the cap of 1000");
+  expect_rejected("random", with_count(kDefaultMaxPoints + 1), "above the cap");
+  expect_rejected("random", GenerateRequest{}, "random needs --count");
+  expect_rejected("jittered", with_count(997), "nearest counts that can: 992 and 999");
+}
+
+TEST(Registry, RejectsUnsupportedDimensions) {
+  for (int dim : {0, 1, 4, -2}) {
+    GenerateRequest r = with_count(16);
+    r.dim = dim;
+    expect_rejected("random", r, "dimension " + std::to_string(dim) + " is not supported");
+  }
+}
+
+TEST(Registry, RejectsBadBounds) {
+  GenerateRequest r = with_count(16);
+  r.lo = {0, 0};
+  r.hi = {1, 0};
+  expect_rejected("random", r, "axis 1 is empty");
+  r.hi = {1, NAN};
+  expect_rejected("random", r, "non-finite bound");
+  r.lo = {0, -INFINITY};
+  r.hi = {1, 1};
+  expect_rejected("random", r, "non-finite bound");
+  r.lo = {0, 0, 0};
+  expect_rejected("random", r, "bounds: need 2 lower and 2 upper");
+}
+
+TEST(Registry, RefusesRequestsBeyondThePointBudgetBeforeAllocating) {
+  // A tiny radius over the unit square could produce ~1.2e12 points.
+  expect_rejected("regular", with_radius(1e-6), "above the cap of 100000000");
+  GenerateRequest r = with_radius(1e-3);
+  r.max_points = 1000;
+  expect_rejected("regular", r, "raise it with --max-points");
+  // Raising the cap past what the machine holds is refused by memory.
+  GenerateRequest huge = with_radius(1e-7);
+  huge.max_points = ~std::uint64_t{0};
+  expect_rejected("regular", huge, "GiB, more than this machine's");
+}
+
+TEST(Registry, RejectsUnknownMethodParameters) {
+  GenerateRequest r = with_count(16);
+  r.params["k"] = 30;
+  expect_rejected("random", r, "random has no parameter 'k' (it takes none)");
+}
+
+TEST(Registry, RejectsNegativeThreads) {
+  GenerateRequest r = with_count(16);
+  r.threads = -1;
+  expect_rejected("random", r, "threads must be 0 (all) or positive, got -1");
+}
+
+}  // namespace
+}  // namespace pds

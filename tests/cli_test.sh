@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# End-to-end checks of the pds command line: exit codes, one-line errors,
+# reproducible bytes, the analyze JSON. Usage: cli_test.sh PATH_TO_PDS
+set -u
+pds=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+
+ok() { passed=$((passed + 1)); }
+bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
+
+# expect_exit CODE FRAGMENT -- ARGS...: exit status CODE, and for errors a
+# single stderr line containing FRAGMENT.
+expect_exit() {
+  local code=$1 fragment=$2
+  shift 3
+  "$pds" "$@" >"$tmp/out" 2>"$tmp/err" </dev/null
+  local rc=$?
+  if [[ $rc -ne $code ]]; then bad "pds $* exited $rc, expected $code; stderr: $(cat "$tmp/err")"; return; fi
+  if [[ $code -ne 0 ]]; then
+    if [[ $(wc -l <"$tmp/err") -ne 1 ]]; then bad "pds $*: stderr is not one line: $(cat "$tmp/err")"; return; fi
+    if ! grep -qF -- "$fragment" "$tmp/err"; then bad "pds $*: stderr lacks '$fragment': $(cat "$tmp/err")"; return; fi
+  fi
+  ok
+}
+
+# Help lists every method and the radius convention.
+expect_exit 0 "" -- --help
+grep -q "jittered" "$tmp/out" && grep -q "minimum distance between any two samples" "$tmp/out" && ok || bad "--help lacks methods"
+expect_exit 0 "" -- generate --help
+grep -q -- "--count" "$tmp/out" && grep -q "regular" "$tmp/out" && ok || bad "generate --help lacks options or methods"
+
+# Same seed, same bytes; another seed, other points; CSV to stdout by default.
+"$pds" generate jittered --count 1024 --seed 5 >"$tmp/a.csv" && "$pds" generate jittered -n 1024 -s 5 -o "$tmp/b.csv" &&
+  cmp -s "$tmp/a.csv" "$tmp/b.csv" && ok || bad "same seed gave different bytes"
+"$pds" generate jittered --count 1024 --seed 6 >"$tmp/c.csv"
+cmp -s "$tmp/a.csv" "$tmp/c.csv" && bad "different seeds gave the same points" || ok
+[[ $(head -1 "$tmp/a.csv") == "x,y" && $(wc -l <"$tmp/a.csv") -eq 1025 ]] && ok || bad "CSV header or count wrong"
+"$pds" generate random --count 100 --dim 3 -o "$tmp/r.npy" && [[ $(stat -c %s "$tmp/r.npy") -eq $((128 + 100 * 3 * 8)) ]] &&
+  ok || bad "3D NPY output has the wrong size"
+"$pds" generate random --count 100 --dim 3 -o "$tmp/r32.npy" --dtype float32 &&
+  [[ $(stat -c %s "$tmp/r32.npy") -eq $((128 + 100 * 3 * 4)) ]] && ok || bad "float32 NPY output has the wrong size"
+
+# analyze: the JSON object and its fields.
+# Every point lies in a stratum of diagonal 0.0442 with a sample in it: maximal at 0.045.
+expect_exit 0 "" -- analyze "$tmp/a.csv" --radius 0.045
+for key in '"count": 1024' '"dim": 2' '"min_distance":' '"relative_radius":' '"maximal": true'; do
+  grep -qF "$key" "$tmp/out" && ok || bad "analyze output lacks $key"
+done
+"$pds" generate regular --radius 0.125 --torus | "$pds" analyze - --torus --radius 0.2 >"$tmp/reg.json" &&
+  grep -qF '"min_distance": 0.125' "$tmp/reg.json" && grep -qF '"count": 64' "$tmp/reg.json" &&
+  grep -qF '"maximal": true' "$tmp/reg.json" && ok || bad "regular grid analysis through stdin is wrong"
+expect_exit 0 "" -- analyze "$tmp/r.npy"
+grep -qF '"dim": 3' "$tmp/out" && ok || bad "NPY analysis lacks dim 3"
+
+# Bad usage and input: exit 2, one line naming the problem.
+expect_exit 2 "radius must be positive and finite, got 0" -- generate regular --radius 0
+expect_exit 2 "radius must be positive and finite, got nan" -- generate regular --radius nan
+expect_exit 2 "radius must be positive and finite, got -1" -- generate regular --radius -1
+expect_exit 2 "radius must be positive and finite, got inf" -- generate regular --radius inf
+expect_exit 2 "count must be at least 1, got 0" -- generate random --count 0
+expect_exit 2 "above the cap" -- generate random --count 200000000
+expect_exit 2 "above the cap of 1000" -- generate regular --radius 0.001 --max-points 1000
+expect_exit 2 "dimension 4 is not supported" -- generate random --count 10 --dim 4
+expect_exit 2 "axis 0 is empty" -- generate random --count 10 --bounds 1,0,1,1
+expect_exit 2 "bounds needs 4 values" -- generate random --count 10 --bounds 0,0,1
+expect_exit 2 "non-finite bound" -- generate random --count 10 --bounds 0,0,inf,1
+expect_exit 2 "unknown method 'bogus'" -- generate bogus --count 10
+expect_exit 2 "random needs --count" -- generate random
+expect_exit 2 "--param expects NAME=NUMBER" -- generate random --count 10 --param k
+expect_exit 2 "has no parameter 'k'" -- generate random --count 10 --param k=3
+expect_exit 2 "unknown point file extension" -- generate random --count 10 -o "$tmp/p.txt"
+expect_exit 2 "" -- generate random --count ten
+expect_exit 2 "" -- frobnicate
+printf 'x,y\n0.1,0.2\n0.3\n' >"$tmp/bad.csv"
+expect_exit 2 "bad.csv:3: expected 2 values, found 1" -- analyze "$tmp/bad.csv"
+expect_exit 2 "cannot open" -- analyze "$tmp/missing.csv"
+printf 'x,y\n0.5,1.5\n' >"$tmp/out_of_box.csv"
+expect_exit 2 "lies outside the domain" -- analyze "$tmp/out_of_box.csv"
+expect_exit 0 "" -- analyze "$tmp/out_of_box.csv" --bounds 0,0,2,2
+expect_exit 2 "radius must be positive and finite" -- analyze "$tmp/a.csv" --radius 0
+
+# Failures: exit 1, and nothing half-written.
+expect_exit 1 "cannot write" -- generate random --count 10 -o "$tmp/no/such/dir/p.csv"
+
+echo "cli: $passed passed, $failed failed"
+[[ $failed -eq 0 ]]
