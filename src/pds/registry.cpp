@@ -7,6 +7,7 @@
 #include "pds/error.h"
 #include "pds/samplers/halton.h"
 #include "pds/samplers/hammersley.h"
+#include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/latin_hypercube.h"
 #include "pds/samplers/multi_jittered.h"
@@ -27,6 +28,7 @@ std::span<const Method> methods() {
       sobol_method(),
       multi_jittered_method(),
       latin_hypercube_method(),
+      dart_throwing_method(),
   };
   return table;
 }

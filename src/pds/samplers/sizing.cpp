@@ -1,0 +1,44 @@
+#include "pds/samplers/sizing.h"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "pds/analysis/relative_radius.h"
+#include "pds/error.h"
+#include "pds/limits.h"
+
+namespace pds {
+namespace {
+
+std::string format(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+}  // namespace
+
+template <int D>
+double radius_for_count(std::uint64_t count, const Domain<D>& domain, double rho) {
+  if (count == 0) throw InvalidArgument("count must be at least 1, got 0");
+  if (!(rho > 0.0 && rho <= 1.0)) throw InvalidArgument("rho must be in (0, 1], got " + format(rho));
+  return 2.0 * rho * max_packing_radius(domain.volume(), static_cast<std::size_t>(count), D);
+}
+
+template <int D>
+void require_count_fits(const char* method, std::uint64_t count, double radius, const Domain<D>& domain) {
+  const double most = std::floor(packing_count(domain.volume(), radius, D));
+  if (static_cast<double>(count) > most)
+    throw InvalidArgument(std::string(method) + ": " + std::to_string(count) + " points cannot fit at radius " +
+                          format(radius) + " in this domain (the densest packing holds at most about " + format(most) +
+                          "); ask for fewer points or a smaller radius");
+}
+
+template double radius_for_count<2>(std::uint64_t, const Domain<2>&, double);
+template double radius_for_count<3>(std::uint64_t, const Domain<3>&, double);
+template void require_count_fits<2>(const char*, std::uint64_t, double, const Domain<2>&);
+template void require_count_fits<3>(const char*, std::uint64_t, double, const Domain<3>&);
+
+}  // namespace pds
