@@ -64,13 +64,13 @@ struct RenderOptionsCli : RenderCommonOptions {
   std::string sampler = "jittered";
   int spp = 4;
   std::string output;
-  std::string error_png, spectrum_png;
+  std::string error_png, spectrum_png, samples_spectrum_png;
   bool metrics = false;
 };
 
 // Error measures of one rendering against the reference, as JSON.
 Json measure(const Image& image, const Image& reference, const ImageSampler& sampler, Image* error_out,
-             Image* spectrum_out) {
+             Image* spectrum_out, Image* density_spectrum = nullptr) {
   Json out;
   const double e = rmse(image, reference);
   out["rmse"] = e;
@@ -83,6 +83,17 @@ Json measure(const Image& image, const Image& reference, const ImageSampler& sam
     out["tile_points"] = t->tile_count();
     out["tile_period_px"] = t->tile_size();
     out["error_tile_peak_ratio"] = period_peak_ratio(spectrum, t->tile_size());
+    out["error_power_on_tile_lattice"] = period_power_share(spectrum, t->tile_size());
+  }
+  if (density_spectrum || sampler.tiled()) {
+    // The samples themselves, on a half-pixel grid: periodic patterns show
+    // their tile frequency here whatever the scene.
+    const int cells = 2;
+    const Image density = power_spectrum(sample_density(sampler, image.width, image.height, cells));
+    if (sampler.tiled())
+      out["samples_power_on_tile_lattice"] = period_power_share(density, sampler.tiled()->tile_size() * cells);
+    out["samples_low_frequency_share"] = low_frequency_share(density, 0.25 / cells);
+    if (density_spectrum) *density_spectrum = density;
   }
   if (error_out) *error_out = error;
   if (spectrum_out) *spectrum_out = spectrum;
@@ -104,6 +115,8 @@ void add_render(CLI::App& app) {
   cmd->add_option("--output,-o", opt->output, "Output PNG")->required();
   cmd->add_option("--error", opt->error_png, "Also write the error image (grey 0.5 = no error, +-0.25 full scale)");
   cmd->add_option("--spectrum", opt->spectrum_png, "Also write the error's power spectrum (log scale, DC at centre)");
+  cmd->add_option("--samples-spectrum", opt->samples_spectrum_png,
+                  "Also write the power spectrum of the sample positions (counts on a half-pixel grid, log scale)");
   cmd->add_flag("--metrics", opt->metrics, "Print RMSE and PSNR against the reference as JSON");
   cmd->callback([opt] {
     const auto [w, h] = parse_size(opt->size);
@@ -117,9 +130,10 @@ void add_render(CLI::App& app) {
     const Image image = render(*scene, *sampler, w, h, ro, &stats);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     write_png(opt->output, image);
-    if (!opt->metrics && opt->error_png.empty() && opt->spectrum_png.empty()) return;
+    if (!opt->metrics && opt->error_png.empty() && opt->spectrum_png.empty() && opt->samples_spectrum_png.empty())
+      return;
     const Image reference = render_reference(*scene, w, h, opt->reference_spp, ro);
-    Image error, spectrum;
+    Image error, spectrum, density;
     Json out;
     out["scene"] = opt->scene;
     out["sampler"] = opt->sampler;
@@ -131,7 +145,8 @@ void add_render(CLI::App& app) {
     out["samples_evaluated"] = stats.samples;
     out["empty_pixels"] = stats.empty_pixels;
     out["render_seconds"] = seconds;
-    out.update(measure(image, reference, *sampler, &error, &spectrum));
+    out.update(measure(image, reference, *sampler, &error, &spectrum, &density));
+    if (!opt->samples_spectrum_png.empty()) write_png(opt->samples_spectrum_png, log_spectrum(density));
     if (!opt->error_png.empty()) write_png(opt->error_png, error, {-0.25, 0.25});
     if (!opt->spectrum_png.empty()) write_png(opt->spectrum_png, log_spectrum(spectrum));
     std::cout << out.dump(2) << std::endl;

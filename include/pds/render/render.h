@@ -70,9 +70,18 @@ Image power_spectrum(const Image& image);
 /// pi * cutoff^2 of it there; blue-noise error puts less.
 double low_frequency_share(const Image& spectrum, double cutoff);
 
+/// The sampler's samples counted on a grid of `cells` x `cells` cells per
+/// pixel over width x height pixels, minus the mean count: an image whose
+/// power spectrum is the sampling pattern's periodogram up to the cell size.
+Image sample_density(const ImageSampler& sampler, int width, int height, int cells = 2);
+
 /// Mean power at the spectrum bins on the lattice of multiples of 1 / period
 /// cycles per pixel (0 excluded) divided by the mean over all other bins;
 /// about 1 for aperiodic error, far above 1 when the error repeats with that period.
 double period_peak_ratio(const Image& spectrum, double period);
+
+/// The share of the spectrum's power (frequency 0 excluded) on that lattice:
+/// 1 for an exactly periodic image, about 1 / period^2 for white noise.
+double period_power_share(const Image& spectrum, double period);
 
 }  // namespace pds

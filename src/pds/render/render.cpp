@@ -121,6 +121,24 @@ Image render_reference(const Scene& scene, int width, int height, int spp, const
   return render(scene, *sampler, width, height, options);
 }
 
+Image sample_density(const ImageSampler& sampler, int width, int height, int cells) {
+  check_size(width, height);
+  if (cells < 1 || static_cast<long long>(cells) * std::max(width, height) > kMaxImageSide)
+    throw InvalidArgument("sample density: cells per pixel must be in [1, " + std::to_string(kMaxImageSide) +
+                          " / image side], got " + std::to_string(cells));
+  Image density(width * cells, height * cells);
+  std::vector<Point<2>> points;
+  sampler.samples_in({0, 0, static_cast<double>(width), static_cast<double>(height)}, points);
+  for (const auto& p : points) {
+    const int x = std::min(density.width - 1, static_cast<int>(p[0] * cells));
+    const int y = std::min(density.height - 1, static_cast<int>(p[1] * cells));
+    density.at(x, y) += 1.0;
+  }
+  const double mean = static_cast<double>(points.size()) / static_cast<double>(density.pixels.size());
+  for (double& v : density.pixels) v -= mean;
+  return density;
+}
+
 double rmse(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height)
     throw InvalidArgument("rmse: images differ in size (" + std::to_string(a.width) + "x" + std::to_string(a.height) +
@@ -191,30 +209,47 @@ double low_frequency_share(const Image& spectrum, double cutoff) {
   return total > 0 ? low / total : 0.0;
 }
 
-double period_peak_ratio(const Image& spectrum, double period) {
-  if (!(period > 0) || !std::isfinite(period))
-    throw InvalidArgument("period_peak_ratio: period must be positive, got " + std::to_string(period));
-  // A bin is on the lattice when its frequency is within half a bin of a multiple of 1 / period.
-  auto on_lattice = [&](int index, int size) {
-    const double cycles = frequency(index, size) * period;  // multiples of the tile frequency
-    return std::abs(cycles - std::round(cycles)) * size / period < 0.5;
-  };
+namespace {
+struct LatticePower {
   double on = 0.0, off = 0.0;
   std::size_t n_on = 0, n_off = 0;
+};
+
+// Power on and off the lattice of multiples of 1 / period cycles per pixel.
+LatticePower lattice_power(const Image& spectrum, double period) {
+  if (!(period > 0) || !std::isfinite(period))
+    throw InvalidArgument("tile lattice: period must be positive, got " + std::to_string(period));
+  // A bin is on the lattice when its frequency is within half a bin of a multiple of 1 / period.
+  auto on_lattice = [&](int index, int size) {
+    const double cycles = frequency(index, size) * period;
+    return std::abs(cycles - std::round(cycles)) * size / period < 0.5;
+  };
+  LatticePower out;
   for (int y = 0; y < spectrum.height; ++y)
     for (int x = 0; x < spectrum.width; ++x) {
       if (x == spectrum.width / 2 && y == spectrum.height / 2) continue;
       if (on_lattice(x, spectrum.width) && on_lattice(y, spectrum.height)) {
-        on += spectrum.at(x, y);
-        ++n_on;
+        out.on += spectrum.at(x, y);
+        ++out.n_on;
       } else {
-        off += spectrum.at(x, y);
-        ++n_off;
+        out.off += spectrum.at(x, y);
+        ++out.n_off;
       }
     }
-  if (n_on == 0 || n_off == 0) return 1.0;
-  if (off == 0) return on > 0 ? std::numeric_limits<double>::infinity() : 1.0;
-  return (on / n_on) / (off / n_off);
+  return out;
+}
+}  // namespace
+
+double period_peak_ratio(const Image& spectrum, double period) {
+  const LatticePower p = lattice_power(spectrum, period);
+  if (p.n_on == 0 || p.n_off == 0) return 1.0;
+  if (p.off == 0) return p.on > 0 ? std::numeric_limits<double>::infinity() : 1.0;
+  return (p.on / p.n_on) / (p.off / p.n_off);
+}
+
+double period_power_share(const Image& spectrum, double period) {
+  const LatticePower p = lattice_power(spectrum, period);
+  return p.on + p.off > 0 ? p.on / (p.on + p.off) : 0.0;
 }
 
 }  // namespace pds

@@ -168,6 +168,19 @@ TEST(ImageSampler, PixelCountsFollowTheirDesign) {
   EXPECT_NEAR(empty, 10000 * std::exp(-1.0), 5 * std::sqrt(10000 * std::exp(-1.0) * (1 - std::exp(-1.0))));
 }
 
+TEST(Spectrum, TiledSamplesPutAllTheirPowerOnTheTileFrequencies) {
+  // The known weakness of tiling: a window holding whole copies sees an exactly
+  // periodic pattern, so its periodogram lives on multiples of 1 / S. Uniform
+  // random samples spread theirs evenly: the window holds 4 x 4 copies, so one
+  // bin in 16 is on that lattice and gets about 1/16 of the power (each share
+  // sums about 1000 bins, a relative spread near 3%; 1.5 times is far off).
+  const auto tiled = make_image_sampler("tiled:random", {.spp = 1, .seed = 3, .tile_count = 256});  // S = 16
+  const Image tiled_density = power_spectrum(sample_density(*tiled, 64, 64, 2));
+  EXPECT_GT(period_power_share(tiled_density, 32.0), 1.0 - 1e-9);
+  const Image random_density = power_spectrum(sample_density(*sampler("random", 1, 3), 64, 64, 2));
+  EXPECT_LT(period_power_share(random_density, 32.0), 1.5 / 16);
+}
+
 TEST(Spectrum, ParsevalAndPeriodicPeaks) {
   Image noise(64, 48);
   Rng rng(1);
@@ -185,6 +198,8 @@ TEST(Spectrum, ParsevalAndPeriodicPeaks) {
   for (int y = 0; y < 48; ++y)
     for (int x = 0; x < 64; ++x) periodic.at(x, y) = noise.at(x % 8, y % 8);
   EXPECT_GT(period_peak_ratio(power_spectrum(periodic), 8.0), 1e6);
+  EXPECT_NEAR(period_power_share(power_spectrum(periodic), 8.0), 1.0, 1e-12);
+  EXPECT_NEAR(period_power_share(spectrum, 8.0), 1.0 / 64, 0.01);
 }
 
 TEST(Png, WrittenFilesAreValidPngsWithTheImage) {

@@ -115,10 +115,11 @@ TEST(TiledPattern, SeamsKeepTheTileMinimumDistance) {
     GenerateRequest request;
     request.torus = true;
     request.seed = 4;
-    if (m.takes_count)
-      request.count = 200;
-    else
+    // Radius-driven where possible, so the radius itself can be checked too.
+    if (m.takes_radius)
       request.radius = 0.06;
+    else
+      request.count = 200;
     const PointSet<2> tile = generate(m.name, request).as<2>();
     if (tile.size() < 2) continue;
     const TiledPattern pattern(tile, 2.0);
