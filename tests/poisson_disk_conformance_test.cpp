@@ -50,6 +50,10 @@ std::vector<Case> cases() {
   out.push_back({"dart-throwing", 2, true, 0.02, 0.73, 0.77});   // measured 0.750-0.753
   out.push_back({"dart-throwing", 3, false, 0.08, 0.77, 0.83});  // measured 0.795-0.803
   out.push_back({"dart-throwing", 3, true, 0.08, 0.74, 0.79});   // measured 0.762-0.764
+  out.push_back({"bridson", 2, false, 0.02, 0.71, 0.76});        // measured 0.732-0.739
+  out.push_back({"bridson", 2, true, 0.02, 0.71, 0.75});         // measured 0.728-0.732
+  out.push_back({"bridson", 3, false, 0.08, 0.74, 0.79});        // measured 0.762-0.769
+  out.push_back({"bridson", 3, true, 0.08, 0.72, 0.76});         // measured 0.738-0.745
   return out;
 }
 

@@ -5,9 +5,10 @@
 #include <sstream>
 
 #include "pds/error.h"
+#include "pds/samplers/bridson.h"
+#include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/halton.h"
 #include "pds/samplers/hammersley.h"
-#include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/latin_hypercube.h"
 #include "pds/samplers/multi_jittered.h"
@@ -29,6 +30,7 @@ std::span<const Method> methods() {
       multi_jittered_method(),
       latin_hypercube_method(),
       dart_throwing_method(),
+      bridson_method(),
   };
   return table;
 }
