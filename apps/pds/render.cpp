@@ -1,6 +1,8 @@
 // pds render / pds render-sheet: the anti-aliasing renderer and the slides'
 // comparison sheet.
 
+#include "pds/render/render.h"
+
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -10,7 +12,6 @@
 #include "commands.h"
 #include "pds/error.h"
 #include "pds/render/png.h"
-#include "pds/render/render.h"
 
 namespace pds::cli {
 namespace {
@@ -124,7 +125,8 @@ void add_render(CLI::App& app) {
     RenderOptions ro{parse_filter(opt->filter), opt->threads};
     const auto scene = make_scene(opt->scene, w, h);
     const auto sampler = make_image_sampler(
-        opt->sampler, {.spp = opt->spp, .seed = opt->seed, .tile_count = opt->tile_count, .params = parse_params(opt->params)});
+        opt->sampler,
+        {.spp = opt->spp, .seed = opt->seed, .tile_count = opt->tile_count, .params = parse_params(opt->params)});
     RenderStats stats;
     const auto start = std::chrono::steady_clock::now();
     const Image image = render(*scene, *sampler, w, h, ro, &stats);
@@ -155,7 +157,7 @@ void add_render(CLI::App& app) {
 
 namespace {
 struct SheetOptions : RenderCommonOptions {
-  std::vector<std::string> samplers{"jittered", "best-candidate", "bridson"};
+  std::vector<std::string> samplers{"jittered", "dart-throwing", "bridson"};
   std::vector<int> spps{1, 4};
   std::string output;
 };

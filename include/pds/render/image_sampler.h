@@ -36,10 +36,10 @@ namespace pds {
 inline constexpr double kTileRelativeRadius = 0.75;
 
 struct ImageSamplerOptions {
-  int spp = 1;                               // samples per pixel, >= 1
+  int spp = 1;  // samples per pixel, >= 1
   std::uint64_t seed = 0;
-  std::uint64_t tile_count = 4096;           // M, for tiled samplers
-  std::map<std::string, double> params;      // method parameters, for tiled samplers
+  std::uint64_t tile_count = 4096;       // M, for tiled samplers
+  std::map<std::string, double> params;  // method parameters, for tiled samplers
 };
 
 class ImageSampler {

@@ -66,8 +66,7 @@ class TiledPattern {
 
   /// Appends the positions of the samples with x0 <= x < x1, y0 <= y < y1, and
   /// (if `extra` is given) their extra-dimension values, extra_dims() per sample.
-  void samples_in(const PixelRect& rect, std::vector<Point<2>>& positions,
-                  std::vector<double>* extra = nullptr) const;
+  void samples_in(const PixelRect& rect, std::vector<Point<2>>& positions, std::vector<double>* extra = nullptr) const;
 
   /// The tile's points (sorted by the pattern's internal bins).
   const PointSet<2>& tile() const { return tile_; }
@@ -83,9 +82,9 @@ class TiledPattern {
  private:
   void check(const PixelRect& rect) const;
 
-  PointSet<2> tile_;                 // sorted by bin
+  PointSet<2> tile_;                      // sorted by bin
   std::vector<std::uint32_t> bin_start_;  // bins_ * bins_ + 1 offsets into tile_
-  std::vector<double> extra_base_;   // extra_dims values per tile point
+  std::vector<double> extra_base_;        // extra_dims values per tile point
   int bins_ = 1;
   double spp_ = 1;
   double tile_size_ = 1;

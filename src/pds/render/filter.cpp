@@ -25,25 +25,32 @@ double mitchell(double d) {
 
 double Filter::radius() const {
   switch (kind) {
-    case FilterKind::Box: return 0.5;
-    case FilterKind::Tent: return 1.0;
-    case FilterKind::Gaussian: return 1.5;
-    case FilterKind::Mitchell: return 2.0;
+    case FilterKind::Box:
+      return 0.5;
+    case FilterKind::Tent:
+      return 1.0;
+    case FilterKind::Gaussian:
+      return 1.5;
+    case FilterKind::Mitchell:
+      return 2.0;
   }
   return 0.0;
 }
 
 double Filter::weight(double d) const {
   switch (kind) {
-    case FilterKind::Box: return d > -0.5 && d <= 0.5 ? 1.0 : 0.0;
-    case FilterKind::Tent: return std::max(0.0, 1.0 - std::abs(d));
+    case FilterKind::Box:
+      return d > -0.5 && d <= 0.5 ? 1.0 : 0.0;
+    case FilterKind::Tent:
+      return std::max(0.0, 1.0 - std::abs(d));
     case FilterKind::Gaussian: {
       const double r = radius();
       if (std::abs(d) >= r) return 0.0;
       const double s2 = 2.0 * kGaussianSigma * kGaussianSigma;
       return std::exp(-d * d / s2) - std::exp(-r * r / s2);
     }
-    case FilterKind::Mitchell: return mitchell(d);
+    case FilterKind::Mitchell:
+      return mitchell(d);
   }
   return 0.0;
 }
@@ -78,10 +85,14 @@ Filter parse_filter(const std::string& name) {
 
 std::string filter_name(const Filter& filter) {
   switch (filter.kind) {
-    case FilterKind::Box: return "box";
-    case FilterKind::Tent: return "tent";
-    case FilterKind::Gaussian: return "gaussian";
-    case FilterKind::Mitchell: return "mitchell";
+    case FilterKind::Box:
+      return "box";
+    case FilterKind::Tent:
+      return "tent";
+    case FilterKind::Gaussian:
+      return "gaussian";
+    case FilterKind::Mitchell:
+      return "mitchell";
   }
   return "?";
 }

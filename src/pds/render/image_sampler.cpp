@@ -104,7 +104,8 @@ class RandomSampler : public ImageSampler {
 
 class JitteredSampler : public ImageSampler {
  public:
-  JitteredSampler(int spp, std::uint64_t seed) : ImageSampler("jittered", spp), seed_(seed), strata_(pixel_strata(spp)) {}
+  JitteredSampler(int spp, std::uint64_t seed)
+      : ImageSampler("jittered", spp), seed_(seed), strata_(pixel_strata(spp)) {}
   void samples_in(const PixelRect& r, std::vector<Point<2>>& out) const override {
     check_rect(r);
     const auto [a, b] = strata_;
@@ -139,7 +140,8 @@ class TiledSampler : public ImageSampler {
 }  // namespace
 
 std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const ImageSamplerOptions& options) {
-  if (options.spp < 1) throw InvalidArgument("spp (samples per pixel) must be at least 1, got " + std::to_string(options.spp));
+  if (options.spp < 1)
+    throw InvalidArgument("spp (samples per pixel) must be at least 1, got " + std::to_string(options.spp));
   if (name == "random") return std::make_unique<RandomSampler>(options.spp, options.seed);
   if (name == "jittered") return std::make_unique<JitteredSampler>(options.spp, options.seed);
   const std::string prefix = "tiled:";

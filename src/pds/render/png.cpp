@@ -55,8 +55,7 @@ void blit(cairo_surface_t* surface, const Image& image, int ox, int oy, GreyMapp
 
 void save(cairo_surface_t* surface, const std::string& path) {
   const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw Failure("cannot write " + path + ": " + cairo_status_to_string(status));
+  if (status != CAIRO_STATUS_SUCCESS) throw Failure("cannot write " + path + ": " + cairo_status_to_string(status));
 }
 
 }  // namespace
@@ -111,7 +110,8 @@ Image log_spectrum(const Image& spectrum) {
   return out;
 }
 
-void write_sheet(const std::string& path, const std::vector<SheetPanel>& panels, int columns, const std::string& title) {
+void write_sheet(const std::string& path, const std::vector<SheetPanel>& panels, int columns,
+                 const std::string& title) {
   if (panels.empty()) throw InvalidArgument("sheet: no panels");
   if (columns < 1) throw InvalidArgument("sheet: columns must be at least 1, got " + std::to_string(columns));
   int pw = 0, ph = 0;

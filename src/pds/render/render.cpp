@@ -27,7 +27,7 @@ namespace pds {
 namespace {
 
 constexpr std::uint64_t kReferenceSeed = 0x7265666572656e63ULL;  // "referenc": apart from user seeds
-constexpr int kMaxFilterTaps = 8;  // 2R + 1 rounded up, for R <= 2 (+1 for edge cases)
+constexpr int kMaxFilterTaps = 8;                                // 2R + 1 rounded up, for R <= 2 (+1 for edge cases)
 
 void check_size(int width, int height) {
   if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
@@ -152,9 +152,7 @@ double rmse(const Image& a, const Image& b) {
   return std::sqrt(s / static_cast<double>(a.pixels.size()));
 }
 
-double psnr(double rmse) {
-  return rmse > 0 ? -20.0 * std::log10(rmse) : std::numeric_limits<double>::infinity();
-}
+double psnr(double rmse) { return rmse > 0 ? -20.0 * std::log10(rmse) : std::numeric_limits<double>::infinity(); }
 
 Image difference(const Image& a, const Image& b) {
   rmse(a, b);  // checks the sizes
@@ -174,7 +172,9 @@ Image power_spectrum(const Image& image) {
     static std::mutex planner;
     std::lock_guard<std::mutex> lock(planner);
     fftw_plan plan = fftw_plan_dft_r2c_2d(h, w, in.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
-    if (!plan) throw Failure("power spectrum: FFTW could not plan a " + std::to_string(w) + "x" + std::to_string(h) + " transform");
+    if (!plan)
+      throw Failure("power spectrum: FFTW could not plan a " + std::to_string(w) + "x" + std::to_string(h) +
+                    " transform");
     fftw_execute(plan);
     fftw_destroy_plan(plan);
   }

@@ -57,8 +57,7 @@ TiledPattern::TiledPattern(PointSet<2> tile, double spp, TiledPatternOptions opt
     std::vector<std::uint32_t> perm(m);
     std::iota(perm.begin(), perm.end(), 0u);
     for (std::size_t i = m; i > 1; --i) std::swap(perm[i - 1], perm[rng.below(i)]);
-    for (std::size_t i = 0; i < m; ++i)
-      base[i * extra + k] = (perm[i] + rng.uniform()) / static_cast<double>(m);
+    for (std::size_t i = 0; i < m; ++i) base[i * extra + k] = (perm[i] + rng.uniform()) / static_cast<double>(m);
   }
 
   // Counting sort of the points into bins, stable in the tile's order.
@@ -227,8 +226,8 @@ double torus_rectangle_discrepancy(const PointSet<2>& points) {
         const double y = sorted[(a + k - 1) % n][1];
         ys.insert(std::upper_bound(ys.begin(), ys.end(), y), y);
       }
-      const bool closed = k >= 1;       // closed x-arc from point a to point a+k-1
-      const bool open = k <= n - 1;     // open x-arc between points a-1 and a+k
+      const bool closed = k >= 1;    // closed x-arc from point a to point a+k-1
+      const bool open = k <= n - 1;  // open x-arc between points a-1 and a+k
       const double closed_width = closed ? x(a + k - 1) - x(a) : 0.0;
       const double open_width = k == n - 1 ? 1.0 : (open ? x(a + k) - x(a - 1) : 1.0);
       if (closed) worst = std::max(worst, arc_extremes(ys, md * closed_width, true, false).excess);

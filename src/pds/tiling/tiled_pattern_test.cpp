@@ -32,8 +32,7 @@ PointSet<2> torus_pattern(const std::string& method, std::uint64_t count, std::u
 std::size_t count_by_enumeration(const PointSet<2>& tile, double s, const PixelRect& r) {
   std::size_t n = 0;
   for (auto ty = static_cast<long>(std::floor(r.y0 / s)) - 1; ty <= static_cast<long>(std::floor(r.y1 / s)) + 1; ++ty)
-    for (auto tx = static_cast<long>(std::floor(r.x0 / s)) - 1; tx <= static_cast<long>(std::floor(r.x1 / s)) + 1;
-         ++tx)
+    for (auto tx = static_cast<long>(std::floor(r.x0 / s)) - 1; tx <= static_cast<long>(std::floor(r.x1 / s)) + 1; ++tx)
       for (const auto& p : tile) n += r.contains((tx + p[0]) * s, (ty + p[1]) * s);
   return n;
 }
