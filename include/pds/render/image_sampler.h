@@ -35,6 +35,9 @@ namespace pds {
 /// reach about 0.72-0.76, so the tile comes out near tile_count points).
 inline constexpr double kTileRelativeRadius = 0.75;
 
+/// Largest spp a sampler accepts (a 512 x 512 image at this density is 2.7e11 samples).
+inline constexpr int kMaxSpp = 1 << 20;
+
 struct ImageSamplerOptions {
   int spp = 1;  // samples per pixel, >= 1
   std::uint64_t seed = 0;

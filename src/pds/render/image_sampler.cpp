@@ -140,8 +140,9 @@ class TiledSampler : public ImageSampler {
 }  // namespace
 
 std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const ImageSamplerOptions& options) {
-  if (options.spp < 1)
-    throw InvalidArgument("spp (samples per pixel) must be at least 1, got " + std::to_string(options.spp));
+  if (options.spp < 1 || options.spp > kMaxSpp)
+    throw InvalidArgument("spp (samples per pixel) must be in [1, " + std::to_string(kMaxSpp) + "], got " +
+                          std::to_string(options.spp));
   if (name == "random") return std::make_unique<RandomSampler>(options.spp, options.seed);
   if (name == "jittered") return std::make_unique<JitteredSampler>(options.spp, options.seed);
   const std::string prefix = "tiled:";

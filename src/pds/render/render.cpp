@@ -36,14 +36,20 @@ void check_size(int width, int height) {
                           std::to_string(height));
 }
 
-// The 1D weights of the pixels [lo, hi] (clipped to [first, last]) for a
-// sample at s; returns the clipped range.
+// The 1D weights of the pixels [first, last] that a sample at s reaches;
+// returns how many and sets `lo` to the first. The weights are computed over
+// the sample's whole support and then clipped, so they are the same bits
+// whichever block asks (the Gaussian's recurrence starts at the same pixel).
 int taps(const Filter& f, double s, int first, int last, double* w, int& lo) {
   const double r = f.radius();
-  lo = std::max(first, static_cast<int>(std::ceil(s - 0.5 - r)));
-  const int hi = std::min(last, static_cast<int>(std::floor(s - 0.5 + r)));
-  const int n = std::clamp(hi - lo + 1, 0, kMaxFilterTaps);
-  f.weights(lo + 0.5 - s, n, w);
+  const int full_lo = static_cast<int>(std::ceil(s - 0.5 - r));
+  const int full_n = std::clamp(static_cast<int>(std::floor(s - 0.5 + r)) - full_lo + 1, 0, kMaxFilterTaps);
+  double all[kMaxFilterTaps];
+  f.weights(full_lo + 0.5 - s, full_n, all);
+  lo = std::max(first, full_lo);
+  const int hi = std::min(last, full_lo + full_n - 1);
+  const int n = std::max(0, hi - lo + 1);
+  for (int k = 0; k < n; ++k) w[k] = all[lo - full_lo + k];
   return n;
 }
 
@@ -58,7 +64,10 @@ Image render(const Scene& scene, const ImageSampler& sampler, int width, int hei
     throw InvalidArgument("render block side must be in [1, 4096], got " + std::to_string(options.block));
   const Filter filter = options.filter;
   const double r = filter.radius();
-  const int block = options.block;
+  // Keep a block's samples near 2^20 (16 MB) however large spp is; the image
+  // does not depend on the block size (a pixel's samples arrive in the same
+  // order from any rectangle: row-major pixels, or copies then bins).
+  const int block = std::clamp(static_cast<int>(std::sqrt(double(1 << 20) / sampler.spp())), 1, options.block);
   const int bx_count = (width + block - 1) / block, by_count = (height + block - 1) / block;
   Image image(width, height);
   std::atomic<std::uint64_t> samples{0}, empty{0};

@@ -102,6 +102,8 @@ TEST(Render, SameSeedSameImageOnAnyThreadCount) {
     const Image one = render(scene, *s, 96, 80, {.threads = 1});
     const Image two = render(scene, *s, 96, 80, {.threads = 2});
     const Image again = render(scene, *sampler(name, 4, 21), 96, 80, {.threads = 0});
+    const Image small_blocks = render(scene, *s, 96, 80, {.threads = 2, .block = 7});
+    EXPECT_EQ(one.pixels, small_blocks.pixels) << name;
     EXPECT_EQ(one.pixels, two.pixels) << name;
     EXPECT_EQ(one.pixels, again.pixels) << name;
     EXPECT_NE(one.pixels, render(scene, *sampler(name, 4, 22), 96, 80, {}).pixels) << name;
@@ -143,6 +145,7 @@ TEST(Render, RejectsBadInput) {
   EXPECT_THROW(render(scene, *s, 10, kMaxImageSide + 1, {}), InvalidArgument);
   EXPECT_THROW(render(scene, *s, 10, 10, {.threads = -1}), InvalidArgument);
   EXPECT_THROW(make_image_sampler("jittered", {.spp = 0}), InvalidArgument);
+  EXPECT_THROW(make_image_sampler("jittered", {.spp = kMaxSpp + 1}), InvalidArgument);
   EXPECT_THROW(make_image_sampler("no-such-method", {.spp = 1}), InvalidArgument);
   EXPECT_THROW(rmse(Image(4, 4), Image(4, 5)), InvalidArgument);
 }
