@@ -80,6 +80,11 @@ Json measure(const Image& image, const Image& reference, const ImageSampler& sam
   const Image spectrum = power_spectrum(error);
   // White error would put pi * 0.25^2 = 19.6% of its power below a quarter cycle per pixel.
   out["error_low_frequency_share"] = low_frequency_share(spectrum, 0.25);
+  // Eight rings of 1/16 cycle per pixel, as multiples of the error's mean power.
+  std::vector<double> profile = radial_power_profile(spectrum, 8);
+  const double mean_power = e * e;  // Parseval: mean periodogram value = mean squared error
+  for (double& v : profile) v = mean_power > 0 ? v / mean_power : 0.0;
+  out["error_radial_profile"] = profile;
   if (const TiledPattern* t = sampler.tiled()) {
     out["tile_points"] = t->tile_count();
     out["tile_period_px"] = t->tile_size();

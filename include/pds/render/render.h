@@ -70,6 +70,11 @@ Image power_spectrum(const Image& image);
 /// pi * cutoff^2 of it there; blue-noise error puts less.
 double low_frequency_share(const Image& spectrum, double cutoff);
 
+/// Mean power in `bands` rings of equal width between radial frequency 0 and
+/// 0.5 cycles per pixel (frequency 0 and the corners beyond 0.5 excluded): the
+/// radially averaged spectrum, flat for white error, rising for blue.
+std::vector<double> radial_power_profile(const Image& spectrum, int bands);
+
 /// The sampler's samples counted on a grid of `cells` x `cells` cells per
 /// pixel over width x height pixels, minus the mean count: an image whose
 /// power spectrum is the sampling pattern's periodogram up to the cell size.

@@ -205,6 +205,24 @@ namespace {
 double frequency(int index, int size) { return static_cast<double>(index - size / 2) / size; }
 }  // namespace
 
+std::vector<double> radial_power_profile(const Image& spectrum, int bands) {
+  if (bands < 1 || bands > 4096)
+    throw InvalidArgument("radial profile: bands must be in [1, 4096], got " + std::to_string(bands));
+  std::vector<double> sum(bands, 0.0);
+  std::vector<std::size_t> count(bands, 0);
+  for (int y = 0; y < spectrum.height; ++y)
+    for (int x = 0; x < spectrum.width; ++x) {
+      const double fx = frequency(x, spectrum.width), fy = frequency(y, spectrum.height);
+      const double f = std::sqrt(fx * fx + fy * fy);
+      if (f == 0 || f >= 0.5) continue;
+      const int band = std::min(bands - 1, static_cast<int>(f / 0.5 * bands));
+      sum[band] += spectrum.at(x, y);
+      ++count[band];
+    }
+  for (int b = 0; b < bands; ++b) sum[b] = count[b] ? sum[b] / count[b] : 0.0;
+  return sum;
+}
+
 double low_frequency_share(const Image& spectrum, double cutoff) {
   double low = 0.0, total = 0.0;
   for (int y = 0; y < spectrum.height; ++y)

@@ -194,6 +194,8 @@ TEST(Spectrum, ParsevalAndPeriodicPeaks) {
   for (double p : spectrum.pixels) power += p;
   EXPECT_NEAR(power, energy, 1e-9 * energy);
   EXPECT_NEAR(period_peak_ratio(spectrum, 8.0), 1.0, 0.5);
+  // White noise: a flat radial profile at the mean power (about 1/3 for U(-1, 1)).
+  for (double band : radial_power_profile(spectrum, 4)) EXPECT_NEAR(band, 1.0 / 3, 0.1);
   // White noise puts pi c^2 of its power below c cycles per pixel.
   EXPECT_NEAR(low_frequency_share(spectrum, 0.25), std::numbers::pi * 0.0625, 0.05);
   // Repeating an 8 x 8 block: all power on multiples of 1/8 cycle per pixel.
