@@ -18,7 +18,8 @@
 //  - any axis-aligned square of S x S pixels holds exactly M samples, and any
 //    rectangle of area A holds spp * A samples within count_bound() of it;
 //  - the plane's minimum distance is S times the tile's toroidal minimum
-//    distance (the seams add no closer pair).
+//    distance for M >= 2 (the seams add no closer pair; a one-point tile
+//    gives a square grid of spacing S).
 // Limits: the plane is exactly periodic with period S, which puts spikes in
 // the spectrum at multiples of 1/S cycles per pixel (docs/tiling.md).
 //
