@@ -18,7 +18,7 @@ constexpr int kSide = 512;
 // Samplers to time: per pixel, then tiled from registry methods (whichever of
 // these the registry has).
 std::vector<std::string> bench_samplers() {
-  std::vector<std::string> names = {"random", "jittered", "tiled:jittered"};
+  std::vector<std::string> names = {"random", "jittered", "sobol-pixel", "tiled:jittered"};
   for (const char* m : {"best-candidate", "bridson", "dart-throwing", "sobol"})
     for (const pds::Method& method : pds::methods())
       if (method.name == m) names.push_back(m);

@@ -10,6 +10,9 @@
 //              pixels get none (holes) and others several (clusters)
 //   jittered   each pixel split into a x b strata (a * b = spp, a the largest
 //              divisor of spp not above sqrt(spp)), one uniform point in each
+//   sobol-pixel  per pixel, the first spp points of an Owen-scrambled Sobol'
+//              (0,2)-sequence keyed by (seed, pixel), as pbrt's (0,2)-sequence
+//              sampler: for spp = 2^m one sample in every elementary box
 //   METHOD     any other registry method (best-candidate, bridson, halton, ...):
 //              a tile of about tile_count points generated on the unit torus
 //              (pds::generate with torus = true) and repeated over the plane by

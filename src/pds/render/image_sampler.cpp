@@ -13,6 +13,7 @@
 #include "pds/error.h"
 #include "pds/registry.h"
 #include "pds/rng.h"
+#include "pds/samplers/sobol.h"
 
 namespace pds {
 
@@ -125,6 +126,29 @@ class JitteredSampler : public ImageSampler {
   std::array<int, 2> strata_;
 };
 
+// Per pixel, the first spp points of a Sobol' (0,2)-sequence with Owen
+// scrambling keyed by (seed, pixel): pbrt's (0,2)-sequence sampler. For spp a
+// power of two every pixel's samples form a (0,m,2)-net (one in every
+// elementary box of the pixel), and pixels are decorrelated by their scrambles.
+class SobolPixelSampler : public ImageSampler {
+ public:
+  SobolPixelSampler(int spp, std::uint64_t seed) : ImageSampler("sobol-pixel", spp), seed_(seed) {}
+  void samples_in(const PixelRect& r, std::vector<Point<2>>& out) const override {
+    check_rect(r);
+    const SobolParams params{.count = static_cast<std::uint64_t>(spp()), .first = 0, .scramble = Scramble::owen};
+    for_each_pixel(r, [&](std::int64_t px, std::int64_t py) {
+      const std::uint64_t key = mix64(mix64(seed_ ^ static_cast<std::uint64_t>(px)) + static_cast<std::uint64_t>(py));
+      for (const Point<2>& u : sobol<2>(params, Domain<2>::unit(), key)) {
+        const double x = static_cast<double>(px) + u[0], y = static_cast<double>(py) + u[1];
+        if (r.contains(x, y)) out.push_back(Point<2>{{x, y}});
+      }
+    });
+  }
+
+ private:
+  std::uint64_t seed_;
+};
+
 class TiledSampler : public ImageSampler {
  public:
   TiledSampler(const std::string& name, const std::string& method, const ImageSamplerOptions& o)
@@ -145,6 +169,7 @@ std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const 
                           std::to_string(options.spp));
   if (name == "random") return std::make_unique<RandomSampler>(options.spp, options.seed);
   if (name == "jittered") return std::make_unique<JitteredSampler>(options.spp, options.seed);
+  if (name == "sobol-pixel") return std::make_unique<SobolPixelSampler>(options.spp, options.seed);
   const std::string prefix = "tiled:";
   const std::string method = name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
   if (options.tile_count < 1) throw InvalidArgument("tile count must be at least 1, got 0");

@@ -16,7 +16,7 @@ namespace {
 
 constexpr int kSide = 128;
 
-const std::vector<std::string> kSamplers = {"random", "jittered", "tiled:jittered"};
+const std::vector<std::string> kSamplers = {"random", "jittered", "sobol-pixel", "tiled:jittered"};
 
 std::unique_ptr<ImageSampler> sampler(const std::string& name, int spp, std::uint64_t seed) {
   return make_image_sampler(name, {.spp = spp, .seed = seed, .tile_count = 1024});
@@ -80,7 +80,7 @@ TEST(Scene, ClosedFormValues) {
 
 TEST(Render, ConstantSceneRendersExactly) {
   const ConstantScene scene(0.5);
-  for (const std::string name : {"random", "jittered", "tiled:jittered", "tiled:random"})
+  for (const std::string name : {"random", "jittered", "sobol-pixel", "tiled:jittered", "tiled:random"})
     for (const std::string& filter : filter_names())
       for (int spp : {1, 3, 4}) {
         RenderStats stats;
@@ -113,7 +113,8 @@ TEST(Render, SameSeedSameImageOnAnyThreadCount) {
 TEST(Render, RmseFallsAsSppGrows) {
   // Measured over seeds 1..20 (128 x 128 zone plate, Gaussian filter): random
   // 0.1995 / 0.0977 / ~0.049 at 1 / 4 / 16 spp (ratio 0.49, as 1/sqrt(4)
-  // predicts); jittered 0.1866 / 0.0664 / 0.0191 (0.36, 0.29); the standard
+  // predicts); jittered 0.1866 / 0.0664 / 0.0191 (0.36, 0.29); sobol-pixel
+  // 0.1865 / 0.0625 / 0.0140 (0.34, 0.22); the standard
   // deviation of one RMSE is under 0.002 (tiled) and 0.001 (per pixel), so a
   // ratio of 0.6 is more than ten of them away.
   for (const std::string& name : kSamplers) {
@@ -125,13 +126,14 @@ TEST(Render, RmseFallsAsSppGrows) {
 
 TEST(Render, StratifiedBeatsUniformRandomOnTheZonePlate) {
   // Measured over seeds 1..20: at 1 spp random 0.1995 (sd 0.0011), jittered
-  // 0.1866 (sd 0.0009), tiled jittered 0.1864 (sd 0.0012); at 4 spp random
-  // 0.0977 (sd 0.0006), jittered 0.0664 (0.0004), tiled 0.0664 (0.0010).
+  // 0.1866 (sd 0.0009), sobol-pixel 0.1865 (0.0006), tiled jittered 0.1864
+  // (sd 0.0012); at 4 spp random 0.0977 (sd 0.0006), jittered 0.0664 (0.0004),
+  // sobol-pixel 0.0625 (0.0003), tiled 0.0664 (0.0010).
   // Half the measured gap is over 4 standard deviations of one difference at
   // 1 spp and over 20 at 4 spp.
   for (std::uint64_t seed : {31, 32, 33}) {
     const double r1 = zone_plate_rmse("random", 1, seed), r4 = zone_plate_rmse("random", 4, seed);
-    for (const std::string name : {"jittered", "tiled:jittered"}) {
+    for (const std::string name : {"jittered", "sobol-pixel", "tiled:jittered"}) {
       EXPECT_LT(zone_plate_rmse(name, 1, seed), r1 - 0.5 * 0.0129) << name << " seed " << seed;
       EXPECT_LT(zone_plate_rmse(name, 4, seed), r4 - 0.5 * 0.0313) << name << " seed " << seed;
     }
@@ -161,6 +163,20 @@ TEST(ImageSampler, PixelCountsFollowTheirDesign) {
     const auto [a, b] = pixel_strata(spp);
     EXPECT_EQ(a * b, spp);
     EXPECT_LE(a, b);
+  }
+  // sobol-pixel at 16 spp: each pixel's samples are a (0,4,2)-net, one sample in
+  // every elementary box of 2^-a by 2^-(4-a) of the pixel.
+  for (int px = -2; px < 3; ++px) {
+    std::vector<Point<2>> net;
+    sampler("sobol-pixel", 16, 9)->samples_in({double(px), 5, px + 1.0, 6}, net);
+    ASSERT_EQ(net.size(), 16u);
+    for (int a = 0; a <= 4; ++a) {
+      std::vector<int> boxes(16, 0);
+      for (const auto& p : net)
+        ++boxes[static_cast<int>((p[0] - px) * (1 << a)) * (1 << (4 - a)) +
+                static_cast<int>((p[1] - 5) * (1 << (4 - a)))];
+      for (int b : boxes) EXPECT_EQ(b, 1) << "pixel " << px << " boxes 2^-" << a;
+    }
   }
   std::vector<Point<2>> points;
   sampler("random", 1, 1)->samples_in({0, 0, 100, 100}, points);
