@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "pds/error.h"
+#include "pds/samplers/best_candidate.h"
 #include "pds/samplers/bridson.h"
 #include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/halton.h"
@@ -31,6 +32,7 @@ std::span<const Method> methods() {
       latin_hypercube_method(),
       dart_throwing_method(),
       bridson_method(),
+      best_candidate_method(),
   };
   return table;
 }
