@@ -162,7 +162,7 @@ void add_render(CLI::App& app) {
 
 namespace {
 struct SheetOptions : RenderCommonOptions {
-  std::vector<std::string> samplers{"jittered", "dart-throwing", "bridson"};
+  std::vector<std::string> samplers{"jittered", "best-candidate", "bridson"};
   std::vector<int> spps{1, 4};
   std::string output;
 };
