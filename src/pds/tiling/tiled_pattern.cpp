@@ -244,19 +244,23 @@ double torus_rectangle_discrepancy_brute_force(const PointSet<2>& points) {
   const std::size_t m = points.size();
   if (m == 0) return 0.0;
   const double md = static_cast<double>(m);
-  auto forward = [](double from, double to) { return to >= from ? to - from : to - from + 1.0; };
-  // An arc on one axis: from coordinate a to b, closed or open; full: the circle.
+  // Arcs of one axis's circle from coordinate a forward to b. The extremes are
+  // reached by closed arcs between two points' coordinates (largest excess of
+  // points) and by open ones, or the whole circle (largest deficit); an open
+  // arc from a point back to itself is the circle less that point.
   struct Arc {
     double a, b;
     bool closed, full;
-    double width(double (*fwd)(double, double)) const { return full ? 1.0 : (!closed && a == b ? 1.0 : fwd(a, b)); }
+  };
+  auto forward = [](double from, double to) { return to >= from ? to - from : to - from + 1.0; };
+  auto width = [&](const Arc& arc) {
+    return arc.full || (!arc.closed && arc.a == arc.b) ? 1.0 : forward(arc.a, arc.b);
   };
   auto inside = [&](const Arc& arc, double t) {
     if (arc.full) return true;
-    const double d = forward(arc.a, t), w = (!arc.closed && arc.a == arc.b) ? 1.0 : forward(arc.a, arc.b);
+    const double d = forward(arc.a, t), w = width(arc);
     return arc.closed ? d <= w : (d > 0 && d < w);
   };
-  double (*fwd)(double, double) = +[](double from, double to) { return to >= from ? to - from : to - from + 1.0; };
   double worst = 0.0;
   for (bool closed : {true, false}) {
     std::vector<Arc> xa, ya;
@@ -273,7 +277,7 @@ double torus_rectangle_discrepancy_brute_force(const PointSet<2>& points) {
       for (const Arc& ay : ya) {
         std::size_t count = 0;
         for (const auto& p : points) count += inside(ax, p[0]) && inside(ay, p[1]);
-        const double expected = md * ax.width(fwd) * ay.width(fwd);
+        const double expected = md * width(ax) * width(ay);
         worst = std::max(worst, closed ? static_cast<double>(count) - expected : expected - static_cast<double>(count));
       }
   }
