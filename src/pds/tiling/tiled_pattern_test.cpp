@@ -77,7 +77,7 @@ TEST(TiledPattern, QueriesReturnExactlyTheSamplesInside) {
 }
 
 TEST(TiledPattern, CountsStayWithinTheStatedBound) {
-  for (const char* method : {"random", "jittered"}) {
+  for (const char* method : {"random", "jittered", "best-candidate"}) {
     const PointSet<2> tile = torus_pattern(method, 256, 2);
     const double e = torus_rectangle_discrepancy(tile);
     for (double spp : {1.0, 3.0, 4.0}) {
