@@ -167,6 +167,10 @@ std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const 
   if (options.spp < 1 || options.spp > kMaxSpp)
     throw InvalidArgument("spp (samples per pixel) must be in [1, " + std::to_string(kMaxSpp) + "], got " +
                           std::to_string(options.spp));
+  const bool per_pixel = name == "random" || name == "jittered" || name == "sobol-pixel";
+  if (per_pixel && !options.params.empty())
+    throw InvalidArgument("sampler " + name + " takes no method parameters (--param is for tiled samplers, got " +
+                          options.params.begin()->first + ")");
   if (name == "random") return std::make_unique<RandomSampler>(options.spp, options.seed);
   if (name == "jittered") return std::make_unique<JitteredSampler>(options.spp, options.seed);
   if (name == "sobol-pixel") return std::make_unique<SobolPixelSampler>(options.spp, options.seed);
