@@ -4,6 +4,7 @@
 // every axis holds exactly one of the N points.
 
 #include <cstdint>
+#include <vector>
 
 #include "pds/domain.h"
 #include "pds/point.h"
@@ -26,12 +27,23 @@ struct LatinHypercubeParams {
 template <int D>
 PointSet<D> latin_hypercube(const LatinHypercubeParams& params, const Domain<D>& domain, std::uint64_t seed);
 
-/// A uniform coordinate in slab `slab` of `n` equal slabs of [0, 1), n < 2^40.
-/// It is drawn from 2^b equally spaced values centred in the slab's 2^b equal
-/// parts, b = 48 - bit_width(n), so the point stays at least 2^-(b+1) slabs
+/// Uniform coordinates within the slabs [s/n, (s+1)/n) of [0, 1), n < 2^40.
+/// A coordinate is drawn from 2^b equally spaced values centred in the slab's
+/// 2^b equal parts, b = 48 - bit_width(n), so it stays at least 2^-(b+1) slabs
 /// from either edge: far more than the rounding of the division by n and of
-/// any later multiplication by n, so floor(x * n) == slab holds in doubles.
-double slab_coordinate(std::uint64_t slab, std::uint64_t n, Rng& rng);
+/// any later multiplication by n, so floor(x * n) == s holds in doubles.
+class SlabJitter {
+ public:
+  explicit SlabJitter(std::uint64_t n);
+  double operator()(std::uint64_t slab, Rng& rng) const {
+    const double u = (static_cast<double>(rng.next() >> shift_) + 0.5) * step_;
+    return (static_cast<double>(slab) + u) / n_;
+  }
+
+ private:
+  double n_, step_;
+  int shift_;
+};
 
 /// A uniformly random permutation of 0 ... n-1 (Fisher-Yates with Rng::below).
 std::vector<std::uint32_t> random_permutation(std::uint32_t n, Rng& rng);

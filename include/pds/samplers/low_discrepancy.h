@@ -11,10 +11,13 @@
 // rounding. Only the final conversion to double rounds (correctly, by one
 // division), so the unscrambled sequences are exact to the last bit.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "pds/domain.h"
 #include "pds/point.h"
@@ -79,7 +82,9 @@ constexpr std::uint64_t reverse_digits(std::uint32_t index) {
 /// R / B^K plus `tail` units of the last digit, correctly rounded and below 1.
 template <unsigned B>
 inline double digits_to_unit(std::uint64_t r, double tail = 0.0) {
-  const double x = (static_cast<double>(r) + tail) / static_cast<double>(DigitScale<B>::scale);
+  // r < B^K < 2^38: the signed conversion is exact and, unlike the unsigned one, a single instruction.
+  const double x =
+      (static_cast<double>(static_cast<std::int64_t>(r)) + tail) / static_cast<double>(DigitScale<B>::scale);
   return x < 1.0 ? x : 0x1.fffffffffffffp-1;
 }
 
@@ -158,20 +163,31 @@ class DigitPermutation {
 /// Owen's nested uniform scrambling of R (Owen 1995): digit k goes through a
 /// random permutation chosen by hashing (key, k, the k digits above it), so
 /// points that share a leading digit prefix are permuted alike and the net
-/// structure survives. Below the K-th digit every point's prefix is unique,
-/// so the remaining digits of a nested scrambling are independent uniform
-/// digits; they are drawn as one uniform tail from the hash of the full prefix.
+/// structure survives (in base 2 one hash covers 6 levels of the digit tree). Below the K-th digit every point's prefix
+/// is unique, so the remaining digits of a nested scrambling are independent uniform digits; they are drawn as one
+/// uniform tail from the hash of the full prefix.
 template <unsigned B>
 double owen_scramble(std::uint64_t r, std::uint64_t key) {
   constexpr int K = DigitScale<B>::digits;
   std::uint64_t out = 0;
   if constexpr (B == 2) {
-    // A node at depth k is (1 << k) | its prefix: unique over all depths.
-    for (int k = 0; k < K; ++k) {
-      const std::uint64_t prefix = r >> (K - k);
-      const std::uint64_t flip = mix64(key ^ ((std::uint64_t{1} << k) | prefix)) >> 63;
-      out = (out << 1) | (((r >> (K - 1 - k)) & 1) ^ flip);
+    // One 64-bit hash serves a whole subtree of 6 levels: the subtree's root
+    // (depth top, named (1 << top) | prefix, unique over all depths) is hashed
+    // and its 63 nodes take bits 1 ... 63 of the hash in heap order (child of
+    // j with digit d: 2j + d). Every node still gets its own uniform bit, at a
+    // sixth of the hashes of one hash per node.
+    constexpr int kLevels = 6;
+    std::uint64_t flips = 0;
+    for (int top = 0; top < K; top += kLevels) {
+      const std::uint64_t h = mix64(key ^ ((std::uint64_t{1} << top) | (r >> (K - top))));
+      std::uint64_t node = 1;
+      for (int k = top; k < top + kLevels && k < K; ++k) {
+        const std::uint64_t digit = (r >> (K - 1 - k)) & 1;
+        flips |= ((h >> node) & 1) << (K - 1 - k);
+        node = 2 * node + digit;
+      }
     }
+    out = r ^ flips;
   } else {
     std::array<std::uint8_t, K> digit;
     std::uint64_t rest = r;
@@ -192,112 +208,134 @@ double owen_scramble(std::uint64_t r, std::uint64_t key) {
   return digits_to_unit<B>(out, tail);
 }
 
-/// The point u of the unit cube mapped to the domain's box; always in [lo, hi).
+/// The map from the unit cube to a domain's box, x = lo + u (hi - lo), with a
+/// result that rounds up to hi (or past it, if hi - lo rounded up) moved to
+/// the largest double below hi: always in [lo, hi). Set up once per set.
 template <int D>
-Point<D> from_unit_cube(const Point<D>& u, const Domain<D>& domain) {
-  Point<D> p;
-  for (int i = 0; i < D; ++i) {
-    const double x = domain.lo[i] + u[i] * domain.extent(i);
-    p[i] = x < domain.hi[i] ? x : std::nextafter(domain.hi[i], domain.lo[i]);
-  }
-  return p;
-}
-
-/// Calls f(std::integral_constant<unsigned, kPrimes[axis]>{}) so that digit
-/// arithmetic divides by a compile-time constant.
-template <class F>
-decltype(auto) with_prime_base(int axis, F&& f) {
-  switch (axis) {
-    case 0:
-      return f(std::integral_constant<unsigned, kPrimes[0]>{});
-    case 1:
-      return f(std::integral_constant<unsigned, kPrimes[1]>{});
-    case 2:
-      return f(std::integral_constant<unsigned, kPrimes[2]>{});
-    case 3:
-      return f(std::integral_constant<unsigned, kPrimes[3]>{});
-    case 4:
-      return f(std::integral_constant<unsigned, kPrimes[4]>{});
-    case 5:
-      return f(std::integral_constant<unsigned, kPrimes[5]>{});
-    case 6:
-      return f(std::integral_constant<unsigned, kPrimes[6]>{});
-    default:
-      return f(std::integral_constant<unsigned, kPrimes[7]>{});
-  }
-}
-
-/// Radical inverses of consecutive indices in base B, with optional digit
-/// permutation, at a few operations per index: incrementing the index changes
-/// one digit plus its carries (on average B/(B-1) digits), and R follows by
-/// adding each changed digit's difference.
-template <unsigned B>
-class RadicalInverseCursor {
+class UnitCubeMap {
  public:
-  static constexpr int K = DigitScale<B>::digits;
-
-  /// Starts at `index`; `perm` (may be null: no scrambling) must outlive the cursor.
-  RadicalInverseCursor(std::uint32_t index, const DigitPermutation<B>* perm) : perm_(perm) {
-    r_ = reverse_digits<B>(index);
-    if (perm_) r_ = perm_->apply(r_);
-    for (int k = 0; k < K; ++k) {
-      digit_[k] = static_cast<std::uint8_t>(index % B);
-      index /= B;
+  explicit UnitCubeMap(const Domain<D>& domain) {
+    for (int i = 0; i < D; ++i) {
+      lo_[i] = domain.lo[i];
+      extent_[i] = domain.extent(i);
+      top_[i] = std::nextafter(domain.hi[i], domain.lo[i]);
     }
   }
-
-  double value() const { return digits_to_unit<B>(r_, perm_ ? perm_->tail() : 0.0); }
-
-  /// Moves to the next index; the caller keeps the index below 2^32.
-  void advance() {
-    int k = 0;
-    while (digit_[k] == B - 1) {
-      r_ += (mapped(k, 0) - mapped(k, B - 1)) * weight(k);  // wraps modulo 2^64; the sum stays exact
-      digit_[k++] = 0;
-    }
-    r_ += (mapped(k, digit_[k] + 1) - mapped(k, digit_[k])) * weight(k);
-    ++digit_[k];
+  double operator()(int axis, double u) const { return std::min(lo_[axis] + u * extent_[axis], top_[axis]); }
+  Point<D> operator()(const Point<D>& u) const {
+    Point<D> p;
+    for (int i = 0; i < D; ++i) p[i] = (*this)(i, u[i]);
+    return p;
   }
 
  private:
-  std::uint64_t mapped(int k, unsigned d) const { return perm_ ? perm_->map(k, d) : d; }
-  static constexpr std::uint64_t weight(int k) { return kWeights[k]; }
-  static constexpr std::array<std::uint64_t, K> kWeights = [] {
-    std::array<std::uint64_t, K> w{};
-    w[K - 1] = 1;
-    for (int k = K - 2; k >= 0; --k) w[k] = w[k + 1] * B;
-    return w;
-  }();
-
-  const DigitPermutation<B>* perm_;
-  std::uint64_t r_;
-  std::array<std::uint8_t, K> digit_;
+  std::array<double, D> lo_, extent_, top_;
 };
 
-/// Writes coordinate `axis` of points first, first+1, ..., first+count-1 of the
-/// base-B radical-inverse sequence, scrambled as asked, into out[i][axis].
-/// Unscrambled and digit-permuted runs walk the indices with a cursor; Owen
-/// scrambling hashes every digit of every point, so it costs K hashes a value.
-template <unsigned B, class Points>
-void fill_radical_inverse(Points& out, int axis, std::uint32_t first, Scramble scramble, std::uint64_t key) {
-  const std::size_t n = out.size();
+/// The point u of the unit cube mapped to the domain's box (UnitCubeMap).
+template <int D>
+Point<D> from_unit_cube(const Point<D>& u, const Domain<D>& domain) {
+  return UnitCubeMap<D>(domain)(u);
+}
+
+/// Radical inverses of consecutive indices in base B, with optional digit
+/// permutation, at a table look-up, an addition and a division each. An index
+/// i = h L + l (L = B^k <= 1024) has R(i) = low[l] + high(h): the k low digits
+/// of i only set the k leading digits of R. low[] is tabulated once; high(h)
+/// is recomputed every L indices.
+template <unsigned B>
+class RadicalInverseWalk {
+ public:
+  static constexpr std::uint32_t kLow = [] {
+    std::uint32_t l = 1;
+    while (l * B <= 1024) l *= B;
+    return l;
+  }();
+
+  /// Starts at `index`; `perm` (null: no scrambling) must outlive the walk.
+  RadicalInverseWalk(std::uint32_t index, const DigitPermutation<B>* perm)
+      : perm_(perm), tail_(perm ? perm->tail() : 0.0), high_(index / kLow), low_index_(index % kLow) {
+    for (std::uint32_t l = 0; l < kLow; ++l) low_[l] = permuted(reverse_digits<B>(l));
+    high_r_ = high_part(high_);
+  }
+
+  /// The radical inverse of the current index; then moves to the next index.
+  double next() {
+    const double x = digits_to_unit<B>(low_[low_index_] + high_r_, tail_);
+    if (++low_index_ == kLow) {
+      low_index_ = 0;
+      high_r_ = high_part(++high_);
+    }
+    return x;
+  }
+
+ private:
+  std::uint64_t permuted(std::uint64_t r) const { return perm_ ? perm_->apply(r) : r; }
+  // The digits of h L, less the permuted zeros of its k low digits that low[] holds.
+  std::uint64_t high_part(std::uint64_t h) const {
+    const std::uint64_t index = h * kLow;
+    if (index >= (std::uint64_t{1} << 32)) return 0;  // past the last index: never read
+    return permuted(reverse_digits<B>(static_cast<std::uint32_t>(index))) - low_[0];
+  }
+
+  const DigitPermutation<B>* perm_;
+  double tail_;
+  std::uint64_t high_;
+  std::uint32_t low_index_;
+  std::uint64_t high_r_ = 0;
+  std::array<std::uint64_t, kLow> low_;
+};
+
+namespace detail {
+
+template <int D, int Lead, std::size_t... A, class LeadFn>
+void fill_radical_inverse_points(std::index_sequence<A...>, PointSet<D>& points, std::uint32_t first, Scramble scramble,
+                                 const std::array<std::uint64_t, D>& keys, const Domain<D>& domain, LeadFn& lead) {
+  const std::size_t n = points.size();
+  const UnitCubeMap<D> to_domain(domain);
   if (scramble == Scramble::owen) {
-    for (std::size_t i = 0; i < n; ++i)
-      out[i][axis] = owen_scramble<B>(reverse_digits<B>(static_cast<std::uint32_t>(first + i)), key);
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto index = static_cast<std::uint32_t>(first + i);
+      Point<D> u;
+      lead(index, u);
+      ((u[Lead + A] = owen_scramble<kPrimes[A]>(reverse_digits<kPrimes[A]>(index), keys[Lead + A])), ...);
+      points[i] = to_domain(u);
+    }
     return;
   }
-  DigitPermutation<B> perm(key);
-  RadicalInverseCursor<B> cursor(first, scramble == Scramble::permute_digits ? &perm : nullptr);
+  const std::tuple<DigitPermutation<kPrimes[A]>...> perms{DigitPermutation<kPrimes[A]>(keys[Lead + A])...};
+  const bool permute = scramble == Scramble::permute_digits;
+  std::tuple<RadicalInverseWalk<kPrimes[A]>...> walks{
+      RadicalInverseWalk<kPrimes[A]>(first, permute ? &std::get<A>(perms) : nullptr)...};
   for (std::size_t i = 0; i < n; ++i) {
-    out[i][axis] = cursor.value();
-    if (i + 1 < n) cursor.advance();
+    Point<D> u;
+    lead(static_cast<std::uint32_t>(first + i), u);
+    ((u[Lead + A] = std::get<A>(walks).next()), ...);
+    points[i] = to_domain(u);
   }
+}
+
+}  // namespace detail
+
+/// Fills points[i] with point first + i of a radical-inverse construction:
+/// axes Lead ... D-1 are the radical inverses of the index in bases 2, 3, 5,
+/// ... (scrambled as asked, axis a with keys[a]), axes below Lead are set by
+/// lead(index, u) (Hammersley's i / N); then the unit cube is mapped to the
+/// domain. Unscrambled and digit-permuted runs walk the indices (RadicalInverseWalk);
+/// Owen scrambling walks every digit of every coordinate (owen_scramble).
+template <int D, int Lead = 0, class LeadFn>
+void fill_radical_inverse_points(PointSet<D>& points, std::uint32_t first, Scramble scramble,
+                                 const std::array<std::uint64_t, D>& keys, const Domain<D>& domain, LeadFn&& lead) {
+  static_assert(D - Lead <= static_cast<int>(kPrimes.size()));
+  detail::fill_radical_inverse_points<D, Lead>(std::make_index_sequence<D - Lead>{}, points, first, scramble, keys,
+                                               domain, lead);
 }
 
 /// Maps every point of a set built in the unit cube to the domain, in place.
 template <int D>
 void map_to_domain(PointSet<D>& points, const Domain<D>& domain) {
-  for (auto& p : points) p = from_unit_cube(p, domain);
+  const UnitCubeMap<D> to_domain(domain);
+  for (auto& p : points) p = to_domain(p);
 }
 
 }  // namespace pds

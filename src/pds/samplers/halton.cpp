@@ -12,7 +12,11 @@
 // Guarantees: the first N points have star discrepancy O(log^D N / N); in 2D
 // the first 2^a 3^b points stratify the 2^a x 3^b grid exactly.
 // Complexity: O(count * D), a few operations a coordinate; Owen scrambling
-// hashes each of the K digits of a coordinate (K = 32, 21, 14 for bases 2, 3, 5).
+// walks the K digits of a coordinate (K = 32, 21, 14 for bases 2, 3, 5) with a
+// hash per node (base 2: per 6 levels).
+// Why not GSL's gsl_qrng_halton: it only steps forward from index 1, has no
+// scrambling and sums digits in floating point (a few ulps off the exact
+// values); the tests use it as a reference.
 // Limits: indices below 2^32; higher axes (large primes) correlate visibly in
 // short prefixes, which is why renderers scramble them.
 
@@ -24,13 +28,11 @@ template <int D>
 PointSet<D> halton(const HaltonParams& params, const Domain<D>& domain, std::uint64_t seed) {
   static_assert(D <= static_cast<int>(kPrimes.size()));
   require_index_range("halton", params.first, params.count);
+  std::array<std::uint64_t, D> keys;
+  for (int a = 0; a < D; ++a) keys[a] = scramble_key(seed, 1, a);
   PointSet<D> points(params.count);
-  const auto first = static_cast<std::uint32_t>(params.first);
-  for (int axis = 0; axis < D; ++axis)
-    with_prime_base(axis, [&](auto base) {
-      fill_radical_inverse<decltype(base)::value>(points, axis, first, params.scramble, scramble_key(seed, 1, axis));
-    });
-  map_to_domain(points, domain);
+  fill_radical_inverse_points<D>(points, static_cast<std::uint32_t>(params.first), params.scramble, keys, domain,
+                                 [](std::uint32_t, Point<D>&) {});
   return points;
 }
 

@@ -26,15 +26,12 @@ PointSet<D> hammersley(const HammersleyParams& params, const Domain<D>& domain, 
   if (params.first + params.count > size)
     throw InvalidArgument("hammersley: points first " + std::to_string(params.first) + " + count " +
                           std::to_string(params.count) + " exceed the set's size " + std::to_string(size));
-  PointSet<D> points(params.count);
-  const auto first = static_cast<std::uint32_t>(params.first);
+  std::array<std::uint64_t, D> keys;
+  for (int a = 0; a < D; ++a) keys[a] = scramble_key(seed, 2, a);
   const double n = static_cast<double>(size);
-  for (std::size_t i = 0; i < points.size(); ++i) points[i][0] = static_cast<double>(params.first + i) / n;
-  for (int axis = 1; axis < D; ++axis)
-    with_prime_base(axis - 1, [&](auto base) {
-      fill_radical_inverse<decltype(base)::value>(points, axis, first, params.scramble, scramble_key(seed, 2, axis));
-    });
-  map_to_domain(points, domain);
+  PointSet<D> points(params.count);
+  fill_radical_inverse_points<D, 1>(points, static_cast<std::uint32_t>(params.first), params.scramble, keys, domain,
+                                    [n](std::uint32_t index, Point<D>& u) { u[0] = static_cast<double>(index) / n; });
   return points;
 }
 

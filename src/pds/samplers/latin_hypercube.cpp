@@ -24,10 +24,10 @@
 
 namespace pds {
 
-double slab_coordinate(std::uint64_t slab, std::uint64_t n, Rng& rng) {
+SlabJitter::SlabJitter(std::uint64_t n) : n_(static_cast<double>(n)) {
   const int bits = 48 - std::bit_width(n);
-  const double u = (static_cast<double>(rng.next() >> (64 - bits)) + 0.5) * std::ldexp(1.0, -bits);
-  return (static_cast<double>(slab) + u) / static_cast<double>(n);
+  shift_ = 64 - bits;
+  step_ = std::ldexp(1.0, -bits);
 }
 
 std::vector<std::uint32_t> random_permutation(std::uint32_t n, Rng& rng) {
@@ -47,7 +47,8 @@ PointSet<D> latin_hypercube(const LatinHypercubeParams& params, const Domain<D>&
     Rng permute(seed, {0, static_cast<std::uint64_t>(a)});
     Rng jitter(seed, {1, static_cast<std::uint64_t>(a)});
     const std::vector<std::uint32_t> slab = random_permutation(static_cast<std::uint32_t>(n), permute);
-    for (std::uint64_t i = 0; i < n; ++i) points[i][a] = slab_coordinate(slab[i], n, jitter);
+    const SlabJitter within(n);
+    for (std::uint64_t i = 0; i < n; ++i) points[i][a] = within(slab[i], jitter);
   }
   map_to_domain(points, domain);
   return points;

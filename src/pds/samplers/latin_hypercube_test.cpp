@@ -44,12 +44,13 @@ TEST(LatinHypercube, HoldsInABoxThroughItsOwnSlabs) {
   }
 }
 
-TEST(LatinHypercube, SlabCoordinateStaysInItsSlab) {
+TEST(LatinHypercube, SlabJitterStaysInItsSlab) {
   Rng rng(1);
   for (std::uint64_t n : {1ull, 3ull, 1000003ull, 1ull << 32}) {
+    const SlabJitter within(n);
     for (std::uint64_t slab : {std::uint64_t{0}, n / 2, n - 1})
       for (int i = 0; i < 1000; ++i) {
-        const double x = slab_coordinate(slab, n, rng);
+        const double x = within(slab, rng);
         ASSERT_EQ(static_cast<std::uint64_t>(std::floor(x * static_cast<double>(n))), slab) << n << " " << slab;
       }
   }

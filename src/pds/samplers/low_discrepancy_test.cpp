@@ -35,27 +35,26 @@ TEST(LowDiscrepancy, RadicalInverseMirrorsTheDigits) {
 }
 
 template <unsigned B>
-void expect_cursor_matches_direct(std::uint32_t first, int steps, std::uint64_t key) {
+void expect_walk_matches_direct(std::uint32_t first, int steps, std::uint64_t key) {
   const DigitPermutation<B> perm(key);
   for (const DigitPermutation<B>* p : {static_cast<const DigitPermutation<B>*>(nullptr), &perm}) {
-    RadicalInverseCursor<B> cursor(first, p);
+    RadicalInverseWalk<B> walk(first, p);
     for (int i = 0; i < steps; ++i) {
       const std::uint64_t r = reverse_digits<B>(first + i);
       const double direct = p ? digits_to_unit<B>(p->apply(r), p->tail()) : radical_inverse<B>(first + i);
-      ASSERT_EQ(cursor.value(), direct) << "base " << B << " index " << first + i;
-      cursor.advance();
+      ASSERT_EQ(walk.next(), direct) << "base " << B << " index " << first + i;
     }
   }
 }
 
-TEST(LowDiscrepancy, CursorMatchesDirectComputation) {
-  expect_cursor_matches_direct<2>(0, 5000, 1);
-  expect_cursor_matches_direct<3>(0, 5000, 2);
-  expect_cursor_matches_direct<5>(0, 5000, 3);
-  // Long carries: up to the last index.
-  expect_cursor_matches_direct<2>(0xffffffffu - 3000, 3000, 4);
-  expect_cursor_matches_direct<3>(0xffffffffu - 3000, 3000, 5);
-  expect_cursor_matches_direct<5>(0xffffffffu - 3000, 3000, 6);
+TEST(LowDiscrepancy, WalkMatchesDirectComputation) {
+  expect_walk_matches_direct<2>(0, 5000, 1);
+  expect_walk_matches_direct<3>(0, 5000, 2);
+  expect_walk_matches_direct<5>(0, 5000, 3);
+  // Long carries, starts inside a block, up to the last index.
+  expect_walk_matches_direct<2>(0xffffffffu - 3000, 3001, 4);
+  expect_walk_matches_direct<3>(0xffffffffu - 3000, 3001, 5);
+  expect_walk_matches_direct<5>(0xffffffffu - 3000, 3001, 6);
 }
 
 template <unsigned B>

@@ -41,32 +41,39 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
     n *= static_cast<std::uint64_t>(params.cells[k]);
     if (n > (std::uint64_t{1} << 32)) throw InvalidArgument("multi-jittered: more than 2^32 strata requested");
   }
-  PointSet<D> points(n);
+  // Per axis: the shuffles (shuffle[k][c * m + r]: the permutation of column c,
+  // only column 0 when correlated) and a jitter stream of its own.
+  std::array<std::vector<std::uint32_t>, D> shuffle;
+  std::array<std::uint64_t, D> m;  // slabs per column
+  std::vector<Rng> jitter;
   for (int k = 0; k < D; ++k) {
-    const std::uint32_t columns = static_cast<std::uint32_t>(params.cells[k]);
-    const std::uint32_t m = static_cast<std::uint32_t>(n / columns);  // slabs per column
-    // shuffle[c * m + r]: the permutation of column c (only column 0 when correlated).
-    std::vector<std::uint32_t> shuffle;
-    shuffle.reserve(params.correlated ? m : n);
+    const auto columns = static_cast<std::uint32_t>(params.cells[k]);
+    m[k] = n / columns;
+    shuffle[k].reserve(params.correlated ? m[k] : n);
     for (std::uint32_t c = 0; c < (params.correlated ? 1 : columns); ++c) {
       Rng rng(seed, {0, static_cast<std::uint64_t>(k), c});
-      const auto p = random_permutation(m, rng);
-      shuffle.insert(shuffle.end(), p.begin(), p.end());
+      const auto p = random_permutation(static_cast<std::uint32_t>(m[k]), rng);
+      shuffle[k].insert(shuffle[k].end(), p.begin(), p.end());
     }
-    Rng jitter(seed, {1, static_cast<std::uint64_t>(k)});
-    std::array<std::uint32_t, D> cell{};
-    for (auto& p : points) {
+    jitter.emplace_back(seed, std::initializer_list<std::uint64_t>{1, static_cast<std::uint64_t>(k)});
+  }
+  const SlabJitter within(n);
+  const UnitCubeMap<D> to_domain(domain);
+  PointSet<D> points(n);
+  std::array<std::uint32_t, D> cell{};
+  for (auto& p : points) {
+    Point<D> u;
+    for (int k = 0; k < D; ++k) {
       std::uint64_t r = 0;  // the other coordinates of the cell, mixed radix, highest axis first
       for (int l = D - 1; l >= 0; --l)
         if (l != k) r = r * static_cast<std::uint64_t>(params.cells[l]) + cell[l];
-      const std::uint32_t column = cell[k];
-      const std::uint64_t slab =
-          std::uint64_t{column} * m + shuffle[(params.correlated ? 0 : column) * std::uint64_t{m} + r];
-      p[k] = slab_coordinate(slab, n, jitter);
-      for (int l = 0; l < D && ++cell[l] == static_cast<std::uint32_t>(params.cells[l]); ++l) cell[l] = 0;
+      const std::uint64_t column = cell[k];
+      const std::uint64_t slab = column * m[k] + shuffle[k][(params.correlated ? 0 : column) * m[k] + r];
+      u[k] = within(slab, jitter[k]);
     }
+    p = to_domain(u);
+    for (int l = 0; l < D && ++cell[l] == static_cast<std::uint32_t>(params.cells[l]); ++l) cell[l] = 0;
   }
-  map_to_domain(points, domain);
   return points;
 }
 

@@ -15,7 +15,7 @@
 // direct computation of its first point.
 // Guarantees: see sobol.h; in 2D the sequence is a (0, 2)-sequence in base 2.
 // Complexity: O(count * D), about one XOR, one conversion and one multiply-add
-// a coordinate unscrambled; Owen scrambling hashes each of 32 bits.
+// a coordinate unscrambled; Owen scrambling walks all 32 bits (6 hashes).
 // Limits: indices below 2^32 (32-bit direction numbers); up to kSobolMaxDim axes.
 // Why not GSL's gsl_qrng_sobol: it only steps forward from the start (no
 // random access to a range), has no scrambling, and costs a call per point;
@@ -106,22 +106,22 @@ PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint6
     tail[a] = perm.tail();
   }
 
-  PointSet<D> points;
-  points.reserve(params.count);  // no zero-filling pass: every point is written once
+  const UnitCubeMap<D> to_domain(domain);
+  PointSet<D> points(params.count);
   // One loop per scrambling, so that the choice is not re-made per coordinate.
   auto walk = [&](auto mode) {
     constexpr Scramble scramble = decltype(mode)::value;
-    Point<D> u;
     for (std::uint64_t i = 0; i < params.count; ++i) {
       for (int a = 0; a < D; ++a) {
+        double u;
         if constexpr (scramble == Scramble::none)
-          u[a] = x[a] * 0x1.0p-32;
+          u = x[a] * 0x1.0p-32;
         else if constexpr (scramble == Scramble::permute_digits)
-          u[a] = digits_to_unit<2>(x[a] ^ shift[a], tail[a]);
+          u = digits_to_unit<2>(x[a] ^ shift[a], tail[a]);
         else
-          u[a] = owen_scramble<2>(x[a], key[a]);
+          u = owen_scramble<2>(x[a], key[a]);
+        points[i][a] = to_domain(a, u);
       }
-      points.push_back(from_unit_cube(u, domain));
       const int bit = std::countr_zero(static_cast<std::uint32_t>(first + i + 1));  // 32 after the last index
       if (bit < 32)
         for (int a = 0; a < D; ++a) x[a] ^= v[a][bit];

@@ -51,6 +51,12 @@ TEST(Sobol, DirectionNumbersFollowJoeKuo) {
   const auto v = sobol_directions(2);
   const std::uint32_t m[6] = {1, 3, 3, 9, 29, 23};
   for (int k = 0; k < 6; ++k) EXPECT_EQ(v[k] >> (31 - k), m[k]) << "k = " << k;
+  // Axis 3 (d = 4: s = 3, a = 1, m = 1, 3, 1) checks the order of a's bits:
+  // x^3 + x + 1 gives m_k = 4 m_{k-2} ^ 8 m_{k-3} ^ m_{k-3}, so 5 and 31 follow
+  // (the reversed order, x^3 + x^2 + 1, would give 11).
+  const auto v3 = sobol_directions(3);
+  const std::uint32_t m3[5] = {1, 3, 1, 5, 31};
+  for (int k = 0; k < 5; ++k) EXPECT_EQ(v3[k] >> (31 - k), m3[k]) << "k = " << k;
   for (int axis = 0; axis < kSobolMaxDim; ++axis) {
     const auto d = sobol_directions(axis);
     for (int k = 0; k < 32; ++k) {
