@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   libcli11-dev nlohmann-json3-dev              # command line and JSON output
-  libcairo2-dev libpng-dev                     # pictures
+  libcairo2-dev libpng-dev fonts-dejavu-core   # pictures (Cairo draws text with a system font)
   libfftw3-dev libgsl-dev                      # spectra, quasi-random sequences
   libcgal-dev libtbb-dev                       # Delaunay/Voronoi, threads
 )

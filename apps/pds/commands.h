@@ -12,6 +12,8 @@ namespace pds::cli {
 
 void add_generate(CLI::App& app);
 void add_analyze(CLI::App& app);
+void add_methods(CLI::App& app);
+void add_compare(CLI::App& app);
 void add_tile(CLI::App& app);
 void add_render(CLI::App& app);
 void add_render_sheet(CLI::App& app);
@@ -30,10 +32,11 @@ void add_domain_options(CLI::App& command, DomainOptions& options, bool dim_opti
 /// Splits --bounds into lo and hi for the dimension; empty means the unit box.
 void split_bounds(const DomainOptions& options, int dim, std::vector<double>& lo, std::vector<double>& hi);
 
-/// Parses repeated --param NAME=NUMBER items.
-std::map<std::string, double> parse_params(const std::vector<std::string>& items);
-
 /// The text listing every registered method, for --help.
 std::string methods_help();
+
+/// docs/methods.md: the registry as a Markdown table (a test keeps the file in
+/// sync with the registry).
+std::string methods_markdown();
 
 }  // namespace pds::cli

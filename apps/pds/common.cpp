@@ -1,4 +1,5 @@
-#include <charconv>
+#include <iostream>
+#include <memory>
 #include <sstream>
 
 #include "commands.h"
@@ -26,21 +27,6 @@ void split_bounds(const DomainOptions& options, int dim, std::vector<double>& lo
   hi.assign(options.bounds.begin() + dim, options.bounds.end());
 }
 
-std::map<std::string, double> parse_params(const std::vector<std::string>& items) {
-  std::map<std::string, double> params;
-  for (const std::string& item : items) {
-    const auto eq = item.find('=');
-    double value = 0;
-    const char* begin = item.data() + (eq == std::string::npos ? 0 : eq + 1);
-    const char* end = item.data() + item.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (eq == std::string::npos || eq == 0 || ec != std::errc() || ptr != end)
-      throw InvalidArgument("--param expects NAME=NUMBER, got '" + item + "'");
-    params[item.substr(0, eq)] = value;
-  }
-  return params;
-}
-
 std::string methods_help() {
   std::ostringstream os;
   os << "Methods (pds generate METHOD):\n";
@@ -55,6 +41,38 @@ std::string methods_help() {
   os << "\n--radius is the minimum distance between any two samples (Bridson's and SciPy's convention),\n"
         "not the radius of the disks around them.";
   return os.str();
+}
+
+std::string methods_markdown() {
+  std::ostringstream os;
+  os << "# Methods\n\n"
+        "Generated from the registry by `pds methods --markdown`; a test fails when this file and the\n"
+        "registry disagree. `--radius` is the minimum distance between any two samples.\n\n"
+        "| method | what it makes | sizing | dims | maximal | parameters (default) | reference |\n"
+        "|---|---|---|---|---|---|---|\n";
+  for (const Method& m : methods()) {
+    std::string dims, params;
+    for (int d : m.dims) dims += (dims.empty() ? "" : ", ") + std::to_string(d);
+    for (const MethodParam& p : m.params) {
+      std::ostringstream v;
+      v << p.default_value;
+      params += (params.empty() ? "" : "; ") + ("`" + p.name + "` (" + v.str() + ") " + p.help);
+    }
+    const std::string sizing = m.takes_count && m.takes_radius ? "count or radius"
+                               : m.takes_count                 ? "count"
+                                                               : "radius";
+    os << "| `" << m.name << "` | " << m.summary << " | " << sizing << " | " << dims << " | "
+       << (m.maximal ? "yes" : "no") << " | " << (params.empty() ? "none" : params) << " | "
+       << (m.citation.empty() ? "-" : m.citation) << " |\n";
+  }
+  return os.str();
+}
+
+void add_methods(CLI::App& app) {
+  auto markdown = std::make_shared<bool>(false);
+  CLI::App* cmd = app.add_subcommand("methods", "List the registered methods");
+  cmd->add_flag("--markdown", *markdown, "Print the Markdown table of docs/methods.md");
+  cmd->callback([markdown] { std::cout << (*markdown ? methods_markdown() : methods_help() + "\n"); });
 }
 
 }  // namespace pds::cli

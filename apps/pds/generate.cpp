@@ -1,8 +1,8 @@
 // pds generate METHOD ...: run a registered method and write the points.
 
-#include <charconv>
 #include <memory>
 
+#include "analysis_common.h"
 #include "commands.h"
 #include "pds/error.h"
 #include "pds/io/point_file.h"

@@ -14,6 +14,8 @@ int main(int argc, char** argv) {
   app.footer(pds::cli::methods_help());
   pds::cli::add_generate(app);
   pds::cli::add_analyze(app);
+  pds::cli::add_methods(app);
+  pds::cli::add_compare(app);
   pds::cli::add_tile(app);
   pds::cli::add_render(app);
   pds::cli::add_render_sheet(app);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "analysis_common.h"
 #include "commands.h"
 #include "pds/error.h"
 #include "pds/render/png.h"

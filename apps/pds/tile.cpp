@@ -4,6 +4,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "analysis_common.h"
 #include "commands.h"
 #include "pds/analysis/distance.h"
 #include "pds/analysis/relative_radius.h"

@@ -31,6 +31,20 @@ TEST(Bridson, PeriodsShorterThanTheNeighbourhood) {
   expect_poisson_disk(bridson(params, thin, 4), thin, params.radius);
 }
 
+TEST(Bridson, AxesWithFewerWiderCells) {
+  // Three cells of 2/3 the nominal edge across y: a sample three cells away
+  // along y can be closer than r, so the neighbourhood must be wider there.
+  BridsonParams params;
+  params.radius = 0.1;
+  for (bool torus : {false, true})
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+      const Domain<2> strip{{0, 0}, {1, 0.1415}, torus};
+      expect_poisson_disk(bridson(params, strip, seed), strip, params.radius);
+      const Domain<3> slab{{0, 0, 0}, {0.5, 0.5, 0.1735}, torus};
+      expect_poisson_disk(bridson(params, slab, seed), slab, params.radius);
+    }
+}
+
 TEST(Bridson, CountGivesExactlyThatMany) {
   for (std::uint64_t n : {1u, 2u, 7u, 1000u}) {
     GenerateRequest r;
