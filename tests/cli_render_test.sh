@@ -53,6 +53,8 @@ is_png "$tmp/sheet.png" && [[ $(grep -c '"rmse"' "$tmp/out") -eq 4 ]] && ok || b
 # Bad input: exit 2, one line naming the problem.
 expect_exit 2 "--size expects WIDTHxHEIGHT" -- render --size 64 -o "$tmp/x.png"
 expect_exit 2 "--size must be between" -- render --size 0x10 -o "$tmp/x.png"
+expect_exit 2 "--size must be between" -- render --size 4097x10 -o "$tmp/x.png"
+expect_exit 2 "tile count must be in" -- render --sampler best-candidate --tile-count 100000000 --size 8x8 -o "$tmp/x.png"
 expect_exit 2 "spp (samples per pixel) must be in [1, 1048576], got 0" -- render --spp 0 --size 8x8 -o "$tmp/x.png"
 expect_exit 2 "unknown scene 'teapot'" -- render --scene teapot --size 8x8 -o "$tmp/x.png"
 expect_exit 2 "unknown filter 'sinc'" -- render --filter sinc --size 8x8 -o "$tmp/x.png"

@@ -93,9 +93,10 @@ Json measure(const Image& image, const Image& reference, const ImageSampler& sam
     out["error_power_on_tile_lattice"] = period_power_share(spectrum, t->tile_size());
   }
   if (density_spectrum || sampler.tiled()) {
-    // The samples themselves, on a half-pixel grid: periodic patterns show
+    // The samples themselves, on a half-pixel grid (whole pixels for the largest
+    // images): periodic patterns show
     // their tile frequency here whatever the scene.
-    const int cells = 2;
+    const int cells = std::max(image.width, image.height) <= kMaxImageSide / 2 ? 2 : 1;
     const Image density = power_spectrum(sample_density(sampler, image.width, image.height, cells));
     if (sampler.tiled())
       out["samples_power_on_tile_lattice"] = period_power_share(density, sampler.tiled()->tile_size() * cells);

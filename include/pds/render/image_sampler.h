@@ -41,6 +41,9 @@ inline constexpr double kTileRelativeRadius = 0.75;
 /// Largest spp a sampler accepts (a 512 x 512 image at this density is 2.7e11 samples).
 inline constexpr int kMaxSpp = 1 << 20;
 
+/// Largest tile a tiled sampler accepts (256 MiB of points).
+inline constexpr std::uint64_t kMaxTileCount = std::uint64_t{1} << 24;
+
 struct ImageSamplerOptions {
   int spp = 1;  // samples per pixel, >= 1
   std::uint64_t seed = 0;

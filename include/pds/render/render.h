@@ -41,8 +41,9 @@ struct RenderStats {
   std::uint64_t empty_pixels = 0;  // pixels no sample reached
 };
 
-/// Largest image side render() accepts.
-inline constexpr int kMaxImageSide = 16384;
+/// Largest image side render() accepts: an image of doubles at this size is
+/// 128 MiB, and a measured rendering holds four (image, reference, error, spectrum).
+inline constexpr int kMaxImageSide = 4096;
 
 /// Renders `scene` at width x height. Throws InvalidArgument for a size out of
 /// [1, kMaxImageSide] or bad options.

@@ -176,7 +176,9 @@ std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const 
   if (name == "sobol-pixel") return std::make_unique<SobolPixelSampler>(options.spp, options.seed);
   const std::string prefix = "tiled:";
   const std::string method = name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
-  if (options.tile_count < 1) throw InvalidArgument("tile count must be at least 1, got 0");
+  if (options.tile_count < 1 || options.tile_count > kMaxTileCount)
+    throw InvalidArgument("tile count must be in [1, " + std::to_string(kMaxTileCount) + "], got " +
+                          std::to_string(options.tile_count));
   return std::make_unique<TiledSampler>(name, method, options);
 }
 

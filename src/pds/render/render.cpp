@@ -133,8 +133,8 @@ Image render_reference(const Scene& scene, int width, int height, int spp, const
 Image sample_density(const ImageSampler& sampler, int width, int height, int cells) {
   check_size(width, height);
   if (cells < 1 || static_cast<long long>(cells) * std::max(width, height) > kMaxImageSide)
-    throw InvalidArgument("sample density: cells per pixel must be in [1, " + std::to_string(kMaxImageSide) +
-                          " / image side], got " + std::to_string(cells));
+    throw InvalidArgument("sample density: cells per pixel times the image side must be at most " +
+                          std::to_string(kMaxImageSide) + ", got " + std::to_string(cells) + " cells");
   Image density(width * cells, height * cells);
   std::vector<Point<2>> points;
   sampler.samples_in({0, 0, static_cast<double>(width), static_cast<double>(height)}, points);
