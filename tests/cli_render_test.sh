@@ -60,6 +60,7 @@ expect_exit 2 "unknown scene 'teapot'" -- render --scene teapot --size 8x8 -o "$
 expect_exit 2 "unknown filter 'sinc'" -- render --filter sinc --size 8x8 -o "$tmp/x.png"
 expect_exit 2 "unknown method 'nope'" -- render --sampler nope --size 8x8 -o "$tmp/x.png"
 expect_exit 2 "--reference-spp must be in" -- render --size 8x8 -o "$tmp/x.png" --metrics --reference-spp 0
+expect_exit 2 "more than 2^32 reference samples" -- render --size 4096x4096 -o "$tmp/x.png" --metrics --reference-spp 512
 expect_exit 2 "sampler jittered takes no method parameters" -- render --size 8x8 -P k=3 -o "$tmp/x.png"
 expect_exit 2 "has no parameter 'k'" -- render --sampler tiled:jittered --size 8x8 -P k=3 -o "$tmp/x.png"
 expect_exit 1 "cannot write" -- render --size 8x8 -o "$tmp/no/such/dir.png"

@@ -57,9 +57,15 @@ std::pair<int, int> parse_size(const std::string& s) {
   return {w, h};
 }
 
-void check_reference_spp(int spp) {
+// The reference is the expensive part: at most 2^32 samples (4096 x 4096 at
+// 256 spp, minutes on this machine), so a typo cannot start an hours-long run.
+void check_reference_spp(int spp, int width, int height) {
   if (spp < 1 || spp > 65536)
     throw InvalidArgument("--reference-spp must be in [1, 65536], got " + std::to_string(spp));
+  const double samples = double(width) * height * spp;
+  if (samples > 4294967296.0)
+    throw InvalidArgument("--reference-spp " + std::to_string(spp) + " at " + std::to_string(width) + "x" +
+                          std::to_string(height) + " is more than 2^32 reference samples; lower it");
 }
 
 struct RenderOptionsCli : RenderCommonOptions {
@@ -128,7 +134,7 @@ void add_render(CLI::App& app) {
   cmd->add_flag("--metrics", opt->metrics, "Print RMSE and PSNR against the reference as JSON");
   cmd->callback([opt] {
     const auto [w, h] = parse_size(opt->size);
-    check_reference_spp(opt->reference_spp);
+    check_reference_spp(opt->reference_spp, w, h);
     RenderOptions ro{parse_filter(opt->filter), opt->threads};
     const auto scene = make_scene(opt->scene, w, h);
     const auto sampler = make_image_sampler(
@@ -181,7 +187,7 @@ void add_render_sheet(CLI::App& app) {
   cmd->add_option("--output,-o", opt->output, "Output PNG")->required();
   cmd->callback([opt] {
     const auto [w, h] = parse_size(opt->size);
-    check_reference_spp(opt->reference_spp);
+    check_reference_spp(opt->reference_spp, w, h);
     if (opt->samplers.empty() || opt->spps.empty()) throw InvalidArgument("render-sheet needs samplers and spp values");
     RenderOptions ro{parse_filter(opt->filter), opt->threads};
     const auto scene = make_scene(opt->scene, w, h);
