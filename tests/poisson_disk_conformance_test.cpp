@@ -82,6 +82,8 @@ GenerateRequest request_for(const Case& c, std::uint64_t seed) {
   return r;
 }
 
+void PrintTo(const Case& c, std::ostream* os) { *os << name_of(c) << " radius " << c.radius; }
+
 template <int D>
 Domain<D> domain_of(const GenerateRequest& r) {
   return r.domain<D>();

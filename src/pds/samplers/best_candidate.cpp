@@ -122,6 +122,9 @@ class LeafBounds {
     while (size_ < slots) size_ *= 2;
     tree_.assign(2 * size_, -kInf);
     tight_.assign(slots, 1);
+    Point<D> none;
+    none.fill(std::numeric_limits<double>::quiet_NaN());
+    witness_.assign(slots, none);
     for (std::size_t j = 0; j < slots; ++j) {
       const auto c = coords(j);
       bool real = true;
@@ -179,7 +182,10 @@ class LeafBounds {
       }
       leaf = id(cell);
       const double bound = std::sqrt(far2) * (1.0 + 1e-12);
-      if (bound < tree_[size_ + leaf]) lower(leaf, bound);
+      if (bound < tree_[size_ + leaf]) {
+        witness_[leaf] = p;
+        lower(leaf, bound);
+      }
       int axis = 0;
       while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
       if (axis == D) return;
@@ -187,6 +193,9 @@ class LeafBounds {
   }
 
   bool is_tight(std::size_t leaf) const { return tight_[leaf]; }
+  /// A sample near the leaf (NaN before any): no point c of the domain is
+  /// farther than distance(c, witness) from every sample, a cheap filter.
+  const Point<D>& witness(std::size_t leaf) const { return witness_[leaf]; }
 
   /// Replaces the leaf's bound by a nearly exact one: the largest distance
   /// from a point of the leaf to the nearest of `near` (which must hold every
@@ -227,7 +236,9 @@ class LeafBounds {
           far2 += far * far;
         }
         bound2 = std::min(bound2, far2);
-        centre2 = std::min(centre2, domain_.distance2(centre, q));
+        const double d2 = domain_.distance2(centre, q);
+        if (level == 0 && d2 < centre2) witness_[leaf] = q;
+        centre2 = std::min(centre2, d2);
       }
       witness = std::max(witness, std::sqrt(centre2));
       const double bound = std::sqrt(bound2) * (1.0 + 1e-12);
@@ -351,6 +362,7 @@ class LeafBounds {
   std::vector<double> tree_;
   std::vector<std::size_t> stack_;
   std::vector<char> tight_;
+  PointSet<D> witness_;
   PointSet<D> boxes_;
   std::vector<int> levels_;
   static constexpr int kMaxTightenLevel = D == 2 ? 4 : 3;
@@ -497,6 +509,8 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
             Point<D> c;
             for (int k = 0; k < D; ++k)
               c[k] = std::min(lo[k] + rng.uniform() * leaves.edge()[k], std::nextafter(domain.hi[k], domain.lo[k]));
+            // A NaN witness compares false: no filter.
+            if (domain.distance2(c, leaves.witness(leaf)) <= best2) continue;
             consider(c, leaves.bound(leaf));
           }
         });
