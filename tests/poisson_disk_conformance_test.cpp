@@ -29,6 +29,7 @@ struct Case {
   bool torus;
   double radius;          // minimum distance asked for; gives ~1000-3000 points
   double rho_lo, rho_hi;  // expected band of the relative radius at that radius
+  double dense = 0;       // radius factor for the uniformity test (0: 0.5 in 2D, 0.7 in 3D)
 };
 
 std::string name_of(const Case& c) {
@@ -50,6 +51,17 @@ std::vector<Case> cases() {
   out.push_back({"dart-throwing", 2, true, 0.02, 0.73, 0.77});   // measured 0.750-0.753
   out.push_back({"dart-throwing", 3, false, 0.08, 0.77, 0.83});  // measured 0.795-0.803
   out.push_back({"dart-throwing", 3, true, 0.08, 0.74, 0.79});   // measured 0.762-0.764
+  out.push_back({"bridson", 2, false, 0.02, 0.71, 0.76});        // measured 0.732-0.739
+  out.push_back({"bridson", 2, true, 0.02, 0.71, 0.75});         // measured 0.728-0.732
+  out.push_back({"bridson", 3, false, 0.08, 0.74, 0.79});        // measured 0.762-0.769
+  out.push_back({"bridson", 3, true, 0.08, 0.72, 0.76});         // measured 0.738-0.745
+  // best-candidate with a radius stops at the first round whose best
+  // candidate is closer than the radius (m = 10).
+  // It is the slowest of the three, so its uniformity sets are smaller.
+  out.push_back({"best-candidate", 2, false, 0.02, 0.71, 0.78, 0.7});  // measured 0.737-0.750
+  out.push_back({"best-candidate", 2, true, 0.02, 0.70, 0.77, 0.7});   // measured 0.731-0.737
+  out.push_back({"best-candidate", 3, false, 0.1, 0.76, 0.83, 0.85});  // measured 0.791-0.801
+  out.push_back({"best-candidate", 3, true, 0.1, 0.72, 0.78, 0.85});   // measured 0.747-0.749
   return out;
 }
 
@@ -69,6 +81,8 @@ GenerateRequest request_for(const Case& c, std::uint64_t seed) {
   }
   return r;
 }
+
+void PrintTo(const Case& c, std::ostream* os) { *os << name_of(c) << " radius " << c.radius; }
 
 template <int D>
 Domain<D> domain_of(const GenerateRequest& r) {
@@ -171,7 +185,7 @@ TEST_P(PoissonDiskConformance, UniformDensityNoBorderOrSeamBias) {
   const Case& c = GetParam();
   // Smaller radius: more points per stratum for the statistic.
   Case dense = c;
-  dense.radius *= c.dim == 2 ? 0.5 : 0.7;
+  dense.radius *= c.dense > 0 ? c.dense : c.dim == 2 ? 0.5 : 0.7;
   const GenerateRequest r = request_for(dense, 3);
   const PointCloud cloud = generate(c.method, r);
   visit_dim(c.dim, [&](auto d) {

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "pds/error.h"
+#include "pds/samplers/best_candidate.h"
+#include "pds/samplers/bridson.h"
 #include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/dunbar_humphreys.h"
 #include "pds/samplers/halton.h"
@@ -32,6 +34,8 @@ std::span<const Method> methods() {
       multi_jittered_method(),
       latin_hypercube_method(),
       dart_throwing_method(),
+      bridson_method(),
+      best_candidate_method(),
       dunbar_humphreys_method(),
       wei_method(),
       jones_method(),

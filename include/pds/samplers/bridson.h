@@ -1,0 +1,45 @@
+#pragma once
+// Bridson's fast Poisson disk sampling: grow the set from one random sample,
+// trying k random candidates in the annulus [r, 2r] around a random active
+// sample (R. Bridson, Fast Poisson disk sampling in arbitrary dimensions,
+// SIGGRAPH 2007 sketches).
+
+#include <cstdint>
+#include <optional>
+
+#include "pds/domain.h"
+#include "pds/point.h"
+#include "pds/registry.h"
+
+namespace pds {
+
+/// Relative radius that --count without --radius asks for (radius_for_count);
+/// below what a finished Bridson set reaches (0.70 and above, docs/bridson.md),
+/// so the set holds the count with room to spare.
+inline constexpr double kBridsonCountRho = 0.65;
+
+struct BridsonParams {
+  double radius = 0.0;                 // minimum distance between samples, > 0
+  int k = 30;                          // candidates tried around an active sample before it retires, >= 1
+  std::optional<std::uint64_t> count;  // return exactly this many (see below)
+};
+
+/// Guarantees: no two samples closer than `radius` (checked in the exact
+/// double arithmetic of Domain::distance2, so the all-pairs oracle agrees),
+/// every sample in [lo, hi); same seed, same points. Without a count the loop
+/// runs until no active sample is left (it ends: each round either adds a
+/// sample, of which at most the packing bound fit, or retires one), and the
+/// set is then near-maximal (not proven maximal: k candidates can all miss a
+/// gap). Output order is generation order, which grows outward from the first
+/// sample: a prefix is not spread over the domain.
+/// With a count N: the finished set at `radius` is thinned to a uniformly
+/// random subset of exactly N samples, in generation order; fewer than N is
+/// InvalidArgument. A radius larger than the domain is valid: one sample.
+/// Invalid (InvalidArgument): radius not positive and finite, k < 1, a count
+/// of 0 or one that does not fit, more than kMaxGridCells background cells.
+template <int D>
+PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::uint64_t seed);
+
+const Method& bridson_method();
+
+}  // namespace pds

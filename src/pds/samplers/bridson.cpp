@@ -1,0 +1,383 @@
+// R. Bridson, Fast Poisson disk sampling in arbitrary dimensions, ACM
+// SIGGRAPH 2007 sketches, article 22.
+//
+// Method: a background grid of cell edge r/sqrt(D) holds at most one sample a
+// cell. Start from one uniform sample and make it active. While samples are
+// active: pick one at random, draw up to k candidates uniformly from the
+// spherical annulus between r and 2r around it (uniform by volume); the first
+// candidate with no sample closer than r (the grid cells within reach) becomes
+// a sample and is made active; if all k fail, the active sample retires.
+// On a torus candidates are wrapped into the domain and distances are to the
+// nearest periodic image; in a box candidates outside are discarded (they
+// count towards k).
+//
+// Guarantees: minimum distance >= r in the exact arithmetic of
+// Domain::distance2 (the same formula, so the all-pairs oracle agrees to the
+// last bit); samples in [lo, hi); same seed, same points. Near-maximal, not
+// proven maximal. Relative radius ~0.73 (2D) measured, docs/bridson.md.
+//
+// Complexity: O(k N) candidate checks, each a fixed number of cells (15 in
+// 2D, 90 in 3D, for the usual reach of 2; typically a few, nearest cells first). Memory: the
+// grid, about 2 cells a sample in 2D and 5 in 3D.
+//
+// Speed (why not pds::Grid): this is the hot loop of the project, so the grid
+// here is specialised. Cells store the sample's coordinates directly (NaN when
+// empty, which compares as "not closer", so the scan has no occupancy branch);
+// a margin of `reach` cells around the domain removes bounds checks and, on a
+// torus, holds copies of the samples near the opposite faces (their original
+// coordinates, so the distance is the domain's min-image formula); neighbour
+// cells are visited nearest first, and a candidate landing in an occupied cell
+// is rejected without any distance computation.
+
+#include "pds/samplers/bridson.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "pds/error.h"
+#include "pds/grid.h"
+#include "pds/limits.h"
+#include "pds/rng.h"
+#include "pds/samplers/random.h"
+#include "pds/samplers/sizing.h"
+
+namespace pds {
+namespace {
+
+std::string format(double v) {
+  std::ostringstream os;
+  os.precision(6);
+  os << v;
+  return os.str();
+}
+
+template <int D, bool Periodic>
+class BridsonGrid {
+ public:
+  BridsonGrid(const Domain<D>& domain, double radius) : radius2_(radius * radius) {
+    // Slightly under r/sqrt(D) so that two samples r apart can never share a
+    // cell, whatever the rounding of the cell arithmetic.
+    const double max_edge = radius / std::sqrt(static_cast<double>(D)) * (1.0 - 1e-9);
+    double total = 1.0;
+    for (int i = 0; i < D; ++i) {
+      lo_[i] = domain.lo[i];
+      extent_[i] = domain.extent(i);
+      half_[i] = 0.5 * extent_[i];
+      const double n = std::max(1.0, std::ceil(extent_[i] / max_edge));
+      if (n > 1e9) throw InvalidArgument("bridson: radius " + format(radius) + " is too small for the domain");
+      cells_[i] = static_cast<int>(n);
+      inv_edge_[i] = n / extent_[i];
+    }
+    // Cells within reach along an axis: |dx| < r spans at most floor(r/e) + 1
+    // cells from the sample's own, and more than the axis's cell count adds
+    // nothing (a box has no more; a torus repeats). With cell counts rounded
+    // up this is at most 3 for D <= 3.
+    reach_ = 1;
+    for (int i = 0; i < D; ++i)
+      reach_ = std::max(reach_, std::min(static_cast<int>(std::floor(radius * inv_edge_[i])) + 1, cells_[i]));
+    if (reach_ > kMaxReach)
+      throw InvalidArgument("bridson: dimension " + std::to_string(D) + " needs a wider neighbourhood than supported");
+    std::size_t stride = 1;
+    for (int i = 0; i < D; ++i) {
+      padded_[i] = cells_[i] + 2 * reach_;
+      stride_[i] = stride;
+      total *= padded_[i];
+      if (total > static_cast<double>(kMaxGridCells))
+        throw InvalidArgument("bridson: radius " + format(radius) + " needs more than " +
+                              std::to_string(kMaxGridCells) + " background cells for this domain");
+      stride *= static_cast<std::size_t>(padded_[i]);
+    }
+    Point<D> empty;
+    empty.fill(std::numeric_limits<double>::quiet_NaN());
+    grid_.assign(stride, empty);
+    build_offsets(radius);
+  }
+
+  /// True if no stored sample is closer than the radius to p; `cell` receives
+  /// p's cell for insert().
+  [[gnu::always_inline]] bool is_free(const Point<D>& p, std::size_t& cell) const {
+    cell = 0;
+    unsigned half = 0;  // which half of its cell p lies in, along each axis
+    for (int i = 0; i < D; ++i) {
+      const double t = (p[i] - lo_[i]) * inv_edge_[i];
+      const int c = std::min(static_cast<int>(t), cells_[i] - 1);
+      half |= static_cast<unsigned>(t - c >= 0.5) << i;
+      cell += static_cast<std::size_t>(c + reach_) * stride_[i];
+    }
+    if (!std::isnan(grid_[cell][0])) return false;
+    // Blocks of kBlock cells without a branch each: the early exit is taken
+    // once a block, not tested (and mispredicted) once a cell.
+    const Point<D>* base = grid_.data() + cell;
+    const std::vector<std::ptrdiff_t>& offsets = offsets_[half];
+    for (std::size_t j = 0; j < offsets.size(); j += kBlock) {
+      bool closer = false;
+      for (std::size_t t = 0; t < kBlock; ++t) closer |= distance2(p, base[offsets[j + t]]) < radius2_;
+      if (closer) return false;
+    }
+    return true;
+  }
+
+  void insert(const Point<D>& p, std::size_t cell) {
+    grid_[cell] = p;
+    if constexpr (Periodic) copy_to_margin(p, cell);
+  }
+
+ private:
+  // Domain::distance2, term for term (an empty cell's NaN gives NaN: "not closer").
+  double distance2(const Point<D>& p, const Point<D>& q) const {
+    double s = 0.0;
+    for (int i = 0; i < D; ++i) {
+      double d = q[i] - p[i];
+      if constexpr (Periodic) {
+        if (d > half_[i])
+          d -= extent_[i];
+        else if (d < -half_[i])
+          d += extent_[i];
+      }
+      s += d * d;
+    }
+    return s;
+  }
+
+  // For each sub-cell (half of the cell along each axis) the neighbour cells
+  // that can hold a point closer than the radius to a point of that sub-cell,
+  // nearest first. Splitting by sub-cell drops 9 of the 24 cells in 2D, 34 of 124 in 3D.
+  // The gaps are shrunk by 1e-6 of a cell so that rounding in the sub-cell
+  // choice can never drop a cell that matters.
+  void build_offsets(double radius) {
+    struct Candidate {
+      double gap2;
+      std::ptrdiff_t offset;
+    };
+    for (unsigned half = 0; half < (1u << D); ++half) {
+      std::vector<Candidate> list;
+      std::array<int, D> o;
+      o.fill(-reach_);
+      while (true) {
+        double gap2 = 0.0;  // squared distance from the sub-cell to the neighbour cell
+        std::ptrdiff_t offset = 0;
+        bool self = true;
+        for (int i = 0; i < D; ++i) {
+          const double edge = 1.0 / inv_edge_[i];
+          const bool upper = half >> i & 1;  // p in [0.5, 1) of its cell along axis i
+          double g = 0.0;
+          if (o[i] > 0) g = (o[i] - (upper ? 1.0 : 0.5)) * edge;
+          if (o[i] < 0) g = (-o[i] - (upper ? 0.5 : 1.0)) * edge;
+          g = std::max(0.0, g - 1e-6 * edge);
+          gap2 += g * g;
+          offset += static_cast<std::ptrdiff_t>(o[i]) * static_cast<std::ptrdiff_t>(stride_[i]);
+          self &= o[i] == 0;
+        }
+        if (!self && gap2 < radius * radius) list.push_back({gap2, offset});
+        int axis = 0;
+        while (axis < D && ++o[axis] > reach_) o[axis++] = -reach_;
+        if (axis == D) break;
+      }
+      std::stable_sort(list.begin(), list.end(),
+                       [](const Candidate& a, const Candidate& b) { return a.gap2 < b.gap2; });
+      for (const Candidate& c : list) offsets_[half].push_back(c.offset);
+      // Pad to whole blocks with the own cell, which is empty when scanned.
+      while (offsets_[half].size() % kBlock) offsets_[half].push_back(0);
+    }
+  }
+
+  static constexpr std::size_t kBlock = 8;
+  static constexpr int kMaxReach = 3;  // floor(sqrt(D)) + 1 for D <= 4
+
+  // On a torus, the margin cells mirror the cells of the opposite faces: a
+  // sample is written to every padded position congruent to its cell.
+  void copy_to_margin(const Point<D>& p, std::size_t cell) {
+    // At most 1 + 2 * reach positions an axis (a period of one cell).
+    std::array<std::array<int, 2 * kMaxReach + 1>, D> positions;
+    std::array<int, D> count{};
+    for (int i = 0; i < D; ++i) {
+      const int c = static_cast<int>(cell / stride_[i] % static_cast<std::size_t>(padded_[i]));
+      for (int k = c % cells_[i]; k < padded_[i]; k += cells_[i]) positions[i][count[i]++] = k;
+    }
+    std::array<int, D> at{};
+    while (true) {
+      std::size_t index = 0;
+      for (int i = 0; i < D; ++i) index += static_cast<std::size_t>(positions[i][at[i]]) * stride_[i];
+      grid_[index] = p;
+      int axis = 0;
+      while (axis < D && ++at[axis] == count[axis]) at[axis++] = 0;
+      if (axis == D) break;
+    }
+  }
+
+  double radius2_;
+  std::array<double, D> lo_{}, extent_{}, half_{}, inv_edge_{};
+  std::array<int, D> cells_{}, padded_{};
+  std::array<std::size_t, D> stride_{};
+  int reach_ = 1;
+  std::vector<Point<D>> grid_;
+  std::array<std::vector<std::ptrdiff_t>, (1u << D)> offsets_;
+};
+
+// A point uniform (by volume) in the annulus r <= |v| <= 2r around `centre`,
+// by rejection from the cube [-2r, 2r]^D: exact and platform-independent
+// (accepts 59% of draws in 2D, 46% in 3D).
+template <int D>
+[[gnu::always_inline]] inline Point<D> annulus_point(Rng& rng, const Point<D>& centre, double r) {
+  const double r2 = r * r, outer2 = 4.0 * r2, half_width = 2.0 * r;
+  while (true) {
+    Point<D> v;
+    double s = 0.0;
+    for (int i = 0; i < D; ++i) {
+      // Uniform in [-1, 1) on a grid of 2^-52: the top 53 bits as a signed value.
+      const double u = static_cast<double>(static_cast<std::int64_t>(rng.next()) >> 11) * 0x1.0p-52;
+      v[i] = u * half_width;
+      s += v[i] * v[i];
+    }
+    if (s >= r2 && s <= outer2) {
+      for (int i = 0; i < D; ++i) v[i] += centre[i];
+      return v;
+    }
+  }
+}
+
+template <int D, bool Periodic>
+PointSet<D> grow(const Domain<D>& domain, double radius, int k, std::uint64_t seed) {
+  BridsonGrid<D, Periodic> grid(domain, radius);
+  Rng rng(seed);
+  bool short_reach = true;
+  for (int i = 0; i < D; ++i) short_reach &= 2.0 * radius < domain.extent(i);
+  PointSet<D> points;
+  // The active list holds coordinates, not indices: one memory access less
+  // for each random pick.
+  PointSet<D> active;
+  std::size_t cell = 0;
+  const Point<D> first = uniform_point(rng, domain);
+  grid.is_free(first, cell);
+  grid.insert(first, cell);
+  points.push_back(first);
+  active.push_back(first);
+  while (!active.empty()) {
+    const std::size_t slot = rng.below(active.size());
+    const Point<D> centre = active[slot];
+    bool found = false;
+    for (int attempt = 0; attempt < k; ++attempt) {
+      Point<D> c = annulus_point(rng, centre, radius);
+      if constexpr (Periodic) {
+        // One period at most when 2r is shorter than every period; else the
+        // general wrap.
+        if (short_reach) {
+          for (int i = 0; i < D; ++i) {
+            if (c[i] < domain.lo[i])
+              c[i] += domain.extent(i);
+            else if (c[i] >= domain.hi[i])
+              c[i] -= domain.extent(i);
+          }
+          if (!domain.contains(c)) c = domain.wrap(c);  // rounding onto hi
+        } else {
+          c = domain.wrap(c);
+        }
+      } else if (!domain.contains(c)) {
+        continue;
+      }
+      if (grid.is_free(c, cell)) {
+        grid.insert(c, cell);
+        active.push_back(c);
+        points.push_back(c);
+        found = true;
+        break;
+      }
+    }
+    if (!found) {
+      active[slot] = active.back();
+      active.pop_back();
+    }
+  }
+  return points;
+}
+
+template <int D>
+PointSet<D> grow(const Domain<D>& domain, double radius, int k, std::uint64_t seed) {
+  return domain.periodic ? grow<D, true>(domain, radius, k, seed) : grow<D, false>(domain, radius, k, seed);
+}
+
+// A uniformly random subset of `count` points, kept in their order.
+template <int D>
+PointSet<D> thin(const PointSet<D>& points, std::uint64_t count, std::uint64_t seed) {
+  std::vector<std::uint32_t> index(points.size());
+  for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<std::uint32_t>(i);
+  Rng rng(seed, {0x7468696e});  // "thin": a stream apart from the sampling's
+  for (std::size_t i = 0; i < count; ++i) std::swap(index[i], index[i + rng.below(index.size() - i)]);
+  index.resize(count);
+  std::sort(index.begin(), index.end());
+  PointSet<D> out;
+  out.reserve(count);
+  for (std::uint32_t i : index) out.push_back(points[i]);
+  return out;
+}
+
+template <int D>
+void validate(const BridsonParams& params, const Domain<D>& domain) {
+  domain.validate();
+  require_radius(params.radius);
+  if (params.k < 1) throw InvalidArgument("bridson: k must be at least 1, got " + std::to_string(params.k));
+  if (params.count) {
+    if (*params.count == 0) throw InvalidArgument("bridson: count must be at least 1, got 0");
+    require_count_fits("bridson", *params.count, params.radius, domain);
+  }
+}
+
+}  // namespace
+
+template <int D>
+PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::uint64_t seed) {
+  validate(params, domain);
+  PointSet<D> points = grow(domain, params.radius, params.k, seed);
+  if (!params.count) return points;
+  if (points.size() < *params.count)
+    throw InvalidArgument("bridson: only " + std::to_string(points.size()) + " points fit at radius " +
+                          format(params.radius) + " (k " + std::to_string(params.k) + "), fewer than the " +
+                          std::to_string(*params.count) + " requested; ask for fewer points or a smaller radius");
+  return thin(points, *params.count, seed);
+}
+
+template PointSet<2> bridson<2>(const BridsonParams&, const Domain<2>&, std::uint64_t);
+template PointSet<3> bridson<3>(const BridsonParams&, const Domain<3>&, std::uint64_t);
+
+const Method& bridson_method() {
+  static const Method method{
+      .name = "bridson",
+      .summary = "Bridson's fast Poisson disk sampling: k candidates in the annulus [r, 2r] around active samples",
+      .citation = "R. Bridson, Fast Poisson disk sampling in arbitrary dimensions, SIGGRAPH 2007 sketches",
+      .takes_count = true,
+      .takes_radius = true,
+      .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
+                 {"rho", kBridsonCountRho, 0.01, 1, false,
+                  "relative radius that sets the radius for --count without --radius"}},
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              BridsonParams params;
+              params.k = static_cast<int>(r.param("k", 30));
+              params.count = r.count;
+              if (r.radius) {
+                params.radius = *r.radius;
+                return bridson(params, domain, r.seed);
+              }
+              // --count alone: the radius of relative radius rho; in the rare
+              // case that fewer fit (tiny counts), retry at a smaller radius.
+              params.radius = radius_for_count(*r.count, domain, r.param("rho", kBridsonCountRho));
+              for (int attempt = 0;; ++attempt) {
+                try {
+                  return bridson(params, domain, r.seed);
+                } catch (const InvalidArgument&) {
+                  if (attempt == 20) throw;
+                  params.radius *= 0.95;
+                }
+              }
+            });
+          },
+  };
+  return method;
+}
+
+}  // namespace pds

@@ -1,0 +1,130 @@
+#include "pds/samplers/bridson.h"
+
+#include <gtest/gtest.h>
+
+#include "pds/analysis/distance.h"
+#include "pds/analysis/relative_radius.h"
+#include "pds/error.h"
+#include "pds/samplers/sizing.h"
+
+namespace pds {
+namespace {
+
+template <int D>
+void expect_poisson_disk(const PointSet<D>& points, const Domain<D>& domain, double radius) {
+  for (const auto& p : points) ASSERT_TRUE(domain.contains(p)) << p;
+  const MinDistance md = min_distance_brute_force(points, domain);
+  EXPECT_GE(md.distance, radius) << domain << ": " << points[md.i] << " " << points[md.j];
+}
+
+TEST(Bridson, PeriodsShorterThanTheNeighbourhood) {
+  // Periods of one or two cells: the margin holds several copies of a sample
+  // and the min-image distance must still be the one the oracle takes.
+  BridsonParams params;
+  params.radius = 0.1;
+  for (const auto& domain : {Domain<2>::torus({0, 0}, {1, 0.15}), Domain<2>::torus({0, 0}, {0.12, 0.31}),
+                             Domain<2>::torus({-3, 5}, {-2.7, 5.05})}) {
+    const auto points = bridson(params, domain, 4);
+    expect_poisson_disk(points, domain, params.radius);
+  }
+  const auto thin = Domain<3>::torus({0, 0, 0}, {0.15, 1, 0.25});
+  expect_poisson_disk(bridson(params, thin, 4), thin, params.radius);
+}
+
+TEST(Bridson, AxesWithFewerWiderCells) {
+  // Three cells of 2/3 the nominal edge across y: a sample three cells away
+  // along y can be closer than r, so the neighbourhood must be wider there.
+  BridsonParams params;
+  params.radius = 0.1;
+  for (bool torus : {false, true})
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+      const Domain<2> strip{{0, 0}, {1, 0.1415}, torus};
+      expect_poisson_disk(bridson(params, strip, seed), strip, params.radius);
+      const Domain<3> slab{{0, 0, 0}, {0.5, 0.5, 0.1735}, torus};
+      expect_poisson_disk(bridson(params, slab, seed), slab, params.radius);
+    }
+}
+
+TEST(Bridson, CountGivesExactlyThatMany) {
+  for (std::uint64_t n : {1u, 2u, 7u, 1000u}) {
+    GenerateRequest r;
+    r.count = n;
+    r.torus = n % 2 == 0;
+    r.seed = n;
+    EXPECT_EQ(generate("bridson", r).size(), n);
+    r.dim = 3;
+    EXPECT_EQ(generate("bridson", r).size(), n);
+  }
+  // With a radius too: a uniform subset of the finished set, at that radius.
+  BridsonParams params;
+  params.radius = 0.03;
+  params.count = 500;
+  const auto domain = Domain<2>::unit(true);
+  const auto points = bridson(params, domain, 9);
+  ASSERT_EQ(points.size(), 500u);
+  expect_poisson_disk(points, domain, 0.03);
+}
+
+TEST(Bridson, CountThatCannotFitIsRejected) {
+  BridsonParams params;
+  params.radius = 0.1;
+  params.count = 200;  // above the densest packing (~139)
+  EXPECT_THROW(bridson(params, Domain<2>::unit(), 1), InvalidArgument);
+  params.count = 120;  // below the packing bound, above what Bridson places (~85)
+  try {
+    bridson(params, Domain<2>::unit(), 1);
+    FAIL() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("only"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Bridson, RadiusLargerThanTheDomainGivesOnePoint) {
+  BridsonParams params;
+  params.radius = 3.0;
+  for (bool torus : {false, true}) {
+    EXPECT_EQ(bridson(params, Domain<2>::unit(torus), 1).size(), 1u);
+    EXPECT_EQ(bridson(params, Domain<3>::unit(torus), 1).size(), 1u);
+  }
+}
+
+TEST(Bridson, MoreCandidatesPackMorePoints) {
+  const auto domain = Domain<2>::unit(true);
+  BridsonParams params;
+  params.radius = 0.02;
+  std::size_t few = 0, many = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    params.k = 3;
+    few += bridson(params, domain, seed).size();
+    params.k = 100;
+    const auto dense = bridson(params, domain, seed);
+    many += dense.size();
+    expect_poisson_disk(dense, domain, params.radius);
+  }
+  EXPECT_GT(many, few + 3 * 100) << few << " vs " << many;
+}
+
+TEST(Bridson, BadParameters) {
+  BridsonParams params;
+  params.radius = 0.1;
+  params.k = 0;
+  EXPECT_THROW(bridson(params, Domain<2>::unit(), 1), InvalidArgument);
+  params.k = -3;
+  EXPECT_THROW(bridson(params, Domain<3>::unit(), 1), InvalidArgument);
+  params.k = 30;
+  params.radius = -1;
+  EXPECT_THROW(bridson(params, Domain<2>::unit(), 1), InvalidArgument);
+  params.radius = 1e-7;  // 10^14 cells
+  EXPECT_THROW(bridson(params, Domain<2>::unit(), 1), InvalidArgument);
+  GenerateRequest r;
+  r.radius = 0.1;
+  r.params = {{"k", 0}};
+  EXPECT_THROW(generate("bridson", r), InvalidArgument);
+  r.params = {{"k", 2.5}};
+  EXPECT_THROW(generate("bridson", r), InvalidArgument);
+  r.params = {{"m", 1}};
+  EXPECT_THROW(generate("bridson", r), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace pds
