@@ -81,6 +81,23 @@ expect_exit 2 "lies outside the domain" -- analyze "$tmp/out_of_box.csv"
 expect_exit 0 "" -- analyze "$tmp/out_of_box.csv" --bounds 0,0,2,2
 expect_exit 2 "radius must be positive and finite" -- analyze "$tmp/a.csv" --radius 0
 
+# Low-discrepancy sequences (issue 4): exact values, seed ignored unless
+# scrambled, a later range continues the sequence, bad parameters exit 2.
+"$pds" generate sobol -n 4 -d 3 >"$tmp/s.csv" && [[ $(sed -n 4p "$tmp/s.csv") == "0.75,0.25,0.25" ]] && ok ||
+  bad "sobol's third point is not (3/4, 1/4, 1/4)"
+"$pds" generate halton -n 64 -s 1 >"$tmp/h1.csv" && "$pds" generate halton -n 64 -s 2 >"$tmp/h2.csv" &&
+  cmp -s "$tmp/h1.csv" "$tmp/h2.csv" && ok || bad "unscrambled halton depends on the seed"
+"$pds" generate halton -n 64 -s 1 -P scramble=2 >"$tmp/o1.csv" && "$pds" generate halton -n 64 -s 2 -P scramble=2 >"$tmp/o2.csv" &&
+  ! cmp -s "$tmp/o1.csv" "$tmp/o2.csv" && ok || bad "Owen-scrambled halton ignores the seed"
+"$pds" generate sobol -n 100 -P scramble=2 -s 3 | tail -n 40 >"$tmp/whole.csv" &&
+  "$pds" generate sobol -n 40 -P first=60 -P scramble=2 -s 3 | tail -n 40 >"$tmp/part.csv" &&
+  cmp -s "$tmp/whole.csv" "$tmp/part.csv" && ok || bad "sobol --param first does not continue the sequence"
+expect_exit 2 "parameter scramble must be an integer in [0, 2]" -- generate sobol -n 10 --param scramble=3
+expect_exit 2 "exceed the sequence's 2^32 points" -- generate halton -n 10 --param first=4294967290
+expect_exit 2 "exceed the set's size 1024" -- generate hammersley -n 256 --param first=900 --param size=1024
+expect_exit 2 "cannot be split into a grid of near-cubic strata" -- generate multi-jittered -n 1021
+expect_exit 0 "" -- generate latin-hypercube -n 1000 -d 3
+
 # Failures: exit 1, and nothing half-written.
 expect_exit 1 "cannot write" -- generate random --count 10 -o "$tmp/no/such/dir/p.csv"
 

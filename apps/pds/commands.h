@@ -4,6 +4,7 @@
 // input, pds::Failure otherwise) and turned into exit codes by main().
 
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,9 @@ void add_generate(CLI::App& app);
 void add_analyze(CLI::App& app);
 void add_methods(CLI::App& app);
 void add_compare(CLI::App& app);
+void add_tile(CLI::App& app);
+void add_render(CLI::App& app);
+void add_render_sheet(CLI::App& app);
 
 /// Options every command that takes a domain shares.
 struct DomainOptions {

@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   pds::cli::add_analyze(app);
   pds::cli::add_methods(app);
   pds::cli::add_compare(app);
+  pds::cli::add_tile(app);
+  pds::cli::add_render(app);
+  pds::cli::add_render_sheet(app);
   try {
     app.parse(argc, argv);
     return 0;

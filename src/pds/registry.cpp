@@ -8,9 +8,17 @@
 #include "pds/samplers/best_candidate.h"
 #include "pds/samplers/bridson.h"
 #include "pds/samplers/dart_throwing.h"
+#include "pds/samplers/dunbar_humphreys.h"
+#include "pds/samplers/halton.h"
+#include "pds/samplers/hammersley.h"
 #include "pds/samplers/jittered.h"
+#include "pds/samplers/jones.h"
+#include "pds/samplers/latin_hypercube.h"
+#include "pds/samplers/multi_jittered.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/regular.h"
+#include "pds/samplers/sobol.h"
+#include "pds/samplers/wei.h"
 
 namespace pds {
 
@@ -20,9 +28,17 @@ std::span<const Method> methods() {
       white_noise_method(),
       regular_method(),
       jittered_method(),
+      halton_method(),
+      hammersley_method(),
+      sobol_method(),
+      multi_jittered_method(),
+      latin_hypercube_method(),
       dart_throwing_method(),
       bridson_method(),
       best_candidate_method(),
+      dunbar_humphreys_method(),
+      wei_method(),
+      jones_method(),
   };
   return table;
 }

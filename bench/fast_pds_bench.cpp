@@ -1,0 +1,90 @@
+// Benchmarks of the fast Poisson disk methods (issue 6): Dunbar & Humphreys
+// boundary sampling, Wei's parallel sampler and Jones's Voronoi sampler, on the
+// 2D unit torus. The argument is the target sample count N; the radius is set
+// from each method's measured density so that it makes about N samples, and
+// the counters report the real count, rho and the peak memory.
+//
+// Peak memory: run one benchmark per process (--benchmark_filter) and read
+// peak_rss_MB, the growth of the process's high-water resident set over the
+// run, against output_MB, the size of the returned points.
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <cmath>
+
+#include "pds/analysis/distance.h"
+#include "pds/analysis/relative_radius.h"
+#include "pds/samplers/dart_throwing.h"
+#include "pds/samplers/dunbar_humphreys.h"
+#include "pds/samplers/jones.h"
+#include "pds/samplers/wei.h"
+
+namespace {
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
+}
+
+/// Runs `make(radius)` and reports samples/s, rho and memory. `density` is the
+/// method's N r^2 on the unit square (measured), so radius = sqrt(density / N).
+template <class Make>
+void run(benchmark::State& state, double density, Make make) {
+  const double radius = std::sqrt(density / static_cast<double>(state.range(0)));
+  const double rss_before = peak_rss_mb();
+  std::size_t count = 0;
+  for (auto _ : state) {
+    auto points = make(radius);
+    count = points.size();
+    benchmark::DoNotOptimize(points.data());
+  }
+  // Read before the analysis below, which allocates its own grid.
+  const double peak = peak_rss_mb() - rss_before;
+  const auto points = make(radius);
+  const auto domain = pds::Domain<2>::unit(true);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
+  state.counters["N"] = static_cast<double>(count);
+  state.counters["rho"] =
+      pds::relative_radius(pds::min_distance(points, domain).distance, domain.volume(), points.size(), 2);
+  state.counters["output_MB"] = static_cast<double>(points.size() * sizeof(points[0])) / (1024.0 * 1024.0);
+  state.counters["peak_rss_MB"] = peak;
+}
+
+void BM_DunbarHumphreys(benchmark::State& state) {
+  run(state, 0.875, [](double r) { return pds::dunbar_humphreys({r}, pds::Domain<2>::unit(true), 1); });
+}
+BENCHMARK(BM_DunbarHumphreys)->RangeMultiplier(10)->Range(10'000, 10'000'000)->Unit(benchmark::kMillisecond);
+
+/// Wei with state.range(1) threads.
+void BM_Wei(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(1));
+  run(state, 0.70, [&](double r) {
+    pds::WeiParams params;
+    params.radius = r;
+    params.threads = threads;
+    return pds::wei<2>(params, pds::Domain<2>::unit(true), 1);
+  });
+}
+BENCHMARK(BM_Wei)
+    ->ArgsProduct({{10'000, 100'000, 1'000'000, 10'000'000}, {1}})
+    ->ArgsProduct({{1'000'000}, {2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_Jones(benchmark::State& state) {
+  run(state, 0.684, [](double r) { return pds::jones({r}, pds::Domain<2>::unit(true), 1); });
+}
+// Up to 10^6: on the torus every sample is in the triangulation 9 times (about
+// 1.4 GB at 10^6), which puts 10^7 out of this machine's reach.
+BENCHMARK(BM_Jones)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
+
+// The baseline: dart throwing (issue 3) with its default failure bound, which
+// stops near rho 0.75 without maximality. Its failure bound grows with N, so
+// the cost is superlinear; 10^6 takes longer than a benchmark run should.
+void BM_DartThrowingBaseline(benchmark::State& state) {
+  run(state, 0.66, [](double r) { return pds::dart_throwing<2>({r}, pds::Domain<2>::unit(true), 1); });
+}
+BENCHMARK(BM_DartThrowingBaseline)->RangeMultiplier(10)->Range(10'000, 100'000)->Unit(benchmark::kMillisecond);
+
+}  // namespace

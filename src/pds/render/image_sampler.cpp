@@ -1,0 +1,185 @@
+// Image-plane samplers (see include/pds/render/image_sampler.h).
+//
+// Per-pixel samplers draw a pixel's samples from a generator keyed by (seed,
+// pixel), so a pixel's samples do not depend on which rectangle asked for them
+// or on the order of the queries. Tiled samplers delegate to TiledPattern.
+
+#include "pds/render/image_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pds/analysis/relative_radius.h"
+#include "pds/error.h"
+#include "pds/registry.h"
+#include "pds/rng.h"
+#include "pds/samplers/sobol.h"
+
+namespace pds {
+
+std::array<int, 2> pixel_strata(int spp) {
+  int a = static_cast<int>(std::sqrt(static_cast<double>(spp)));
+  while (a > 1 && spp % a != 0) --a;
+  return {a, spp / a};
+}
+
+PointSet<2> generate_tile(const std::string& method, std::uint64_t count, std::uint64_t seed,
+                          const std::map<std::string, double>& params) {
+  const Method& m = find_method(method);
+  GenerateRequest request;
+  request.dim = 2;
+  request.torus = true;
+  request.seed = seed;
+  request.params = params;
+  if (m.takes_count)
+    request.count = count;
+  else
+    request.radius = 2.0 * kTileRelativeRadius * max_packing_radius(1.0, count, 2);
+  const PointCloud cloud = generate(method, request);
+  if (cloud.size() == 0) throw Failure("tile: method " + method + " returned no points");
+  return cloud.as<2>();
+}
+
+namespace {
+
+// Calls f(px, py) for every pixel the rectangle overlaps.
+template <class F>
+void for_each_pixel(const PixelRect& r, F&& f) {
+  if (!(r.x1 > r.x0) || !(r.y1 > r.y0)) return;
+  const auto x0 = static_cast<std::int64_t>(std::floor(r.x0)), x1 = static_cast<std::int64_t>(std::ceil(r.x1));
+  const auto y0 = static_cast<std::int64_t>(std::floor(r.y0)), y1 = static_cast<std::int64_t>(std::ceil(r.y1));
+  for (std::int64_t py = y0; py < y1; ++py)
+    for (std::int64_t px = x0; px < x1; ++px) f(px, py);
+}
+
+void check_rect(const PixelRect& r) {
+  for (double v : {r.x0, r.y0, r.x1, r.y1})
+    if (!std::isfinite(v) || std::abs(v) > 1e15)
+      throw InvalidArgument("image sampler: rectangle coordinate " + std::to_string(v) + " is not a usable pixel");
+}
+
+// A Poisson variate of mean `mean` by inversion, in chunks of mean at most 500
+// so that exp(-mean) stays far from underflow (a sum of Poisson variates is
+// Poisson). O(mean) uniforms on average.
+std::uint64_t poisson(Rng& rng, double mean) {
+  std::uint64_t total = 0;
+  while (mean > 0) {
+    const double chunk = std::min(mean, 500.0);
+    mean -= chunk;
+    double p = std::exp(-chunk), cumulative = p;
+    const double u = rng.uniform();
+    std::uint64_t k = 0;
+    // The tail beyond chunk + 40 sqrt(chunk) + 40 has probability below 1e-300.
+    const auto limit = static_cast<std::uint64_t>(chunk + 40.0 * std::sqrt(chunk) + 40.0);
+    while (u >= cumulative && k < limit) {
+      ++k;
+      p *= chunk / static_cast<double>(k);
+      cumulative += p;
+    }
+    total += k;
+  }
+  return total;
+}
+
+// The homogeneous Poisson process of intensity spp: restricted to one pixel it
+// is a Poisson(spp) number of independent uniform points, and pixels are
+// independent, so each pixel can be drawn on its own.
+class RandomSampler : public ImageSampler {
+ public:
+  RandomSampler(int spp, std::uint64_t seed) : ImageSampler("random", spp), seed_(seed) {}
+  void samples_in(const PixelRect& r, std::vector<Point<2>>& out) const override {
+    check_rect(r);
+    for_each_pixel(r, [&](std::int64_t px, std::int64_t py) {
+      Rng rng(seed_, {static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)});
+      const std::uint64_t n = poisson(rng, spp());
+      for (std::uint64_t i = 0; i < n; ++i) {
+        const double x = static_cast<double>(px) + rng.uniform(), y = static_cast<double>(py) + rng.uniform();
+        if (r.contains(x, y)) out.push_back(Point<2>{{x, y}});
+      }
+    });
+  }
+
+ private:
+  std::uint64_t seed_;
+};
+
+class JitteredSampler : public ImageSampler {
+ public:
+  JitteredSampler(int spp, std::uint64_t seed)
+      : ImageSampler("jittered", spp), seed_(seed), strata_(pixel_strata(spp)) {}
+  void samples_in(const PixelRect& r, std::vector<Point<2>>& out) const override {
+    check_rect(r);
+    const auto [a, b] = strata_;
+    for_each_pixel(r, [&](std::int64_t px, std::int64_t py) {
+      Rng rng(seed_, {static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)});
+      for (int j = 0; j < b; ++j)
+        for (int i = 0; i < a; ++i) {
+          const double x = static_cast<double>(px) + (i + rng.uniform()) / a;
+          const double y = static_cast<double>(py) + (j + rng.uniform()) / b;
+          if (r.contains(x, y)) out.push_back(Point<2>{{x, y}});
+        }
+    });
+  }
+
+ private:
+  std::uint64_t seed_;
+  std::array<int, 2> strata_;
+};
+
+// Per pixel, the first spp points of a Sobol' (0,2)-sequence with Owen
+// scrambling keyed by (seed, pixel): pbrt's (0,2)-sequence sampler. For spp a
+// power of two every pixel's samples form a (0,m,2)-net (one in every
+// elementary box of the pixel), and pixels are decorrelated by their scrambles.
+class SobolPixelSampler : public ImageSampler {
+ public:
+  SobolPixelSampler(int spp, std::uint64_t seed) : ImageSampler("sobol-pixel", spp), seed_(seed) {}
+  void samples_in(const PixelRect& r, std::vector<Point<2>>& out) const override {
+    check_rect(r);
+    const SobolParams params{.count = static_cast<std::uint64_t>(spp()), .first = 0, .scramble = Scramble::owen};
+    for_each_pixel(r, [&](std::int64_t px, std::int64_t py) {
+      const std::uint64_t key = mix64(mix64(seed_ ^ static_cast<std::uint64_t>(px)) + static_cast<std::uint64_t>(py));
+      for (const Point<2>& u : sobol<2>(params, Domain<2>::unit(), key)) {
+        const double x = static_cast<double>(px) + u[0], y = static_cast<double>(py) + u[1];
+        if (r.contains(x, y)) out.push_back(Point<2>{{x, y}});
+      }
+    });
+  }
+
+ private:
+  std::uint64_t seed_;
+};
+
+class TiledSampler : public ImageSampler {
+ public:
+  TiledSampler(const std::string& name, const std::string& method, const ImageSamplerOptions& o)
+      : ImageSampler(name, o.spp),
+        pattern_(generate_tile(method, o.tile_count, o.seed, o.params), o.spp, TiledPatternOptions{0, o.seed}) {}
+  void samples_in(const PixelRect& r, std::vector<Point<2>>& out) const override { pattern_.samples_in(r, out); }
+  const TiledPattern* tiled() const override { return &pattern_; }
+
+ private:
+  TiledPattern pattern_;
+};
+
+}  // namespace
+
+std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const ImageSamplerOptions& options) {
+  if (options.spp < 1 || options.spp > kMaxSpp)
+    throw InvalidArgument("spp (samples per pixel) must be in [1, " + std::to_string(kMaxSpp) + "], got " +
+                          std::to_string(options.spp));
+  const bool per_pixel = name == "random" || name == "jittered" || name == "sobol-pixel";
+  if (per_pixel && !options.params.empty())
+    throw InvalidArgument("sampler " + name + " takes no method parameters (--param is for tiled samplers, got " +
+                          options.params.begin()->first + ")");
+  if (name == "random") return std::make_unique<RandomSampler>(options.spp, options.seed);
+  if (name == "jittered") return std::make_unique<JitteredSampler>(options.spp, options.seed);
+  if (name == "sobol-pixel") return std::make_unique<SobolPixelSampler>(options.spp, options.seed);
+  const std::string prefix = "tiled:";
+  const std::string method = name.rfind(prefix, 0) == 0 ? name.substr(prefix.size()) : name;
+  if (options.tile_count < 1 || options.tile_count > kMaxTileCount)
+    throw InvalidArgument("tile count must be in [1, " + std::to_string(kMaxTileCount) + "], got " +
+                          std::to_string(options.tile_count));
+  return std::make_unique<TiledSampler>(name, method, options);
+}
+
+}  // namespace pds

@@ -1,0 +1,402 @@
+// T. R. Jones, "Efficient generation of Poisson-disk sampling patterns",
+// journal of graphics tools 11(2), 27-36, 2006.
+//
+// Method, as in the paper: keep the Voronoi diagram of the samples. The part
+// of a sample's Voronoi cell outside its disk of radius r is exactly the area
+// of that cell where a new sample may go (every point of the cell is nearest
+// to its site). Choose a cell with probability proportional to that available
+// area (a binary sum tree over the cells, O(log N)), draw a point uniformly in
+// the available part of the cell, insert it, and update the cells of its
+// Delaunay neighbours; stop when no area is left. Each sample is therefore
+// uniform over the whole uncovered area: the process is maximal dart
+// throwing, with no wasted darts in covered regions.
+//
+// Our realisation. CGAL's Delaunay_triangulation_2 (exact predicates) holds
+// the samples; a cell's polygon is the circumcentres of its incident faces in
+// order. Box: four far frame points keep every cell bounded, and cells are
+// clipped to the box. Torus: each sample is inserted with its 8 periodic
+// copies (3x3 tiles), and the cell of the central copy is the cell on the
+// torus. The available part of a convex cell is split at the chords where its
+// boundary crosses the circle: each outside run of the boundary with its
+// chord bounds a convex piece (the available area plus a circular segment),
+// or, with no crossing, the whole cell. The sum tree holds the area of these
+// pieces; a point drawn uniformly in them is kept when it lies outside the
+// disk (and, checked on the stored coordinates, at least r from every sample),
+// which is uniform over the available area. A cell counts as covered when all
+// its vertices are within r (1 + 1e-10) of its site, so the set is maximal up
+// to 1e-10 r.
+//
+// Complexity: O(log N) per sample for the tree plus expected O(1) for the
+// Delaunay insertion (located from the chosen cell's site) and the updates:
+// O(N log N). Memory: the triangulation (9 copies per sample on a torus).
+// Limits: 2D only.
+#include "pds/samplers/jones.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "pds/error.h"
+#include "pds/grid.h"
+#include "pds/rng.h"
+#include "pds/samplers/random.h"
+
+namespace pds {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::int32_t, Kernel>;  // sample index, -1: frame
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, CGAL::Triangulation_face_base_2<Kernel>>;
+using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+using Vertex = Delaunay::Vertex_handle;
+
+struct V2 {
+  double x, y;
+};
+V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
+double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
+double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
+
+double area(const std::vector<V2>& poly) {
+  double s = 0.0;
+  for (std::size_t i = 0, n = poly.size(); i < n; ++i) s += cross(poly[i], poly[(i + 1) % n]);
+  return 0.5 * s;
+}
+
+/// Binary tree of partial sums over the cells' weights: weighted choice and
+/// update in O(log N). Parents are recomputed from their children, so no
+/// rounding drift accumulates.
+class SumTree {
+ public:
+  double total() const { return sums_.size() > 1 ? sums_[1] : 0.0; }
+  double weight(std::size_t i) const { return sums_[capacity_ + i]; }
+
+  void set(std::size_t i, double w) {
+    if (i >= capacity_) grow(i + 1);
+    std::size_t n = capacity_ + i;
+    sums_[n] = w;
+    for (n /= 2; n >= 1; n /= 2) sums_[n] = sums_[2 * n] + sums_[2 * n + 1];
+  }
+
+  /// The leaf whose prefix-sum range holds u, 0 <= u < total().
+  std::size_t find(double u) const {
+    std::size_t n = 1;
+    while (n < capacity_) {
+      if (u < sums_[2 * n]) {
+        n = 2 * n;
+      } else {
+        u -= sums_[2 * n];
+        n = 2 * n + 1;
+      }
+    }
+    return n - capacity_;
+  }
+
+  void reserve(std::size_t n) { grow(n); }
+
+ private:
+  void grow(std::size_t n) {
+    std::size_t capacity = std::max<std::size_t>(capacity_, 1);
+    while (capacity < n) capacity *= 2;
+    if (capacity == capacity_) return;
+    std::vector<double> sums(2 * capacity, 0.0);
+    for (std::size_t i = 0; i < capacity_; ++i) sums[capacity + i] = sums_[capacity_ + i];
+    for (std::size_t k = capacity - 1; k >= 1; --k) sums[k] = sums[2 * k] + sums[2 * k + 1];
+    sums_ = std::move(sums);
+    capacity_ = capacity;
+  }
+
+  std::size_t capacity_ = 0;
+  std::vector<double> sums_;
+};
+
+class JonesSampler {
+ public:
+  JonesSampler(const JonesParams& params, const Domain<2>& domain, std::uint64_t seed)
+      : domain_(domain),
+        r2_(params.radius * params.radius),
+        cover2_(r2_ * (1.0 + 2e-10)),
+        copies_(domain.periodic ? 9 : 1),
+        grid_(Grid<2>::for_radius(domain, params.radius)),
+        rng_(seed),
+        radius_(params.radius) {}
+
+  PointSet<2> run() {
+    if (!domain_.periodic) {
+      // Far frame points: every sample is inside their hull, so its cell is
+      // bounded; cells are clipped to the box anyway.
+      const double e = 4.0 * std::max(domain_.extent(0), domain_.extent(1));
+      for (double x : {domain_.lo[0] - e, domain_.hi[0] + e})
+        for (double y : {domain_.lo[1] - e, domain_.hi[1] + e}) dt_.insert(Delaunay::Point(x, y))->info() = -1;
+    }
+    insert(uniform_point(rng_, domain_), -1);
+    // A miss is a dart in the circular segment of a piece or, rarely, one that
+    // rounding puts too close to a sample. Pieces are cut where a vertex is at
+    // least 1e-10 r outside the disk, so about half of the darts hit; a cell
+    // missing this often in a row means the geometry broke down numerically.
+    constexpr int kMaxMisses = 10000;
+    int empty_picks = 0;
+    while (tree_.total() > 0.0) {
+      const std::size_t k = tree_.find(rng_.uniform() * tree_.total());
+      if (!(tree_.weight(k) > 0.0)) {
+        // Only rounding at a leaf's boundary picks an empty leaf.
+        if (++empty_picks > kMaxMisses) throw Failure("jones: the area tree keeps picking empty cells");
+        continue;
+      }
+      empty_picks = 0;
+      const auto dart = draw(k);
+      if (!dart) {
+        if (++misses_[k] > kMaxMisses)
+          throw Failure("jones: " + std::to_string(kMaxMisses) + " darts in a row missed the free area of cell " +
+                        std::to_string(k) + " (radius " + std::to_string(radius_) + ")");
+        continue;
+      }
+      insert(*dart, static_cast<std::int32_t>(k));
+    }
+    return std::move(points_);
+  }
+
+ private:
+  /// The Voronoi cell of sample k (clipped to the box), counter-clockwise.
+  std::vector<V2> cell(std::size_t k) const {
+    std::vector<V2> poly;
+    const Vertex v = handles_[k * copies_ + copies_ / 2];
+    auto face = dt_.incident_faces(v), done = face;
+    do {
+      const auto c = dt_.circumcenter(face);
+      poly.push_back({c.x(), c.y()});
+    } while (++face != done);
+    if (!domain_.periodic) {
+      for (int axis = 0; axis < 2; ++axis) {
+        clip(poly, axis, domain_.lo[axis], +1.0);
+        clip(poly, axis, domain_.hi[axis], -1.0);
+      }
+    }
+    return poly;
+  }
+
+  /// Keeps the part of a convex polygon with sign * (coord - bound) >= 0.
+  static void clip(std::vector<V2>& poly, int axis, double bound, double sign) {
+    std::vector<V2> out;
+    const std::size_t n = poly.size();
+    auto value = [&](const V2& p) { return sign * ((axis == 0 ? p.x : p.y) - bound); };
+    for (std::size_t i = 0; i < n; ++i) {
+      const V2 a = poly[i], b = poly[(i + 1) % n];
+      const double va = value(a), vb = value(b);
+      if (va >= 0.0) out.push_back(a);
+      if ((va >= 0.0) != (vb >= 0.0)) {
+        const double t = va / (va - vb);
+        V2 c{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+        // The crossing lies on the bound exactly.
+        (axis == 0 ? c.x : c.y) = bound;
+        out.push_back(c);
+      }
+    }
+    poly = std::move(out);
+  }
+
+  /// Convex pieces that together contain the part of the cell outside the
+  /// disk of sample k (see the file comment).
+  std::vector<std::vector<V2>> pieces(std::size_t k) const {
+    const std::vector<V2> poly = cell(k);
+    std::vector<std::vector<V2>> result;
+    const std::size_t n = poly.size();
+    if (n < 3) return result;
+    const V2 p{points_[k][0], points_[k][1]};
+    bool all_covered = true;
+    for (const V2& v : poly) all_covered = all_covered && dot(v - p, v - p) <= cover2_;
+    if (all_covered) return result;
+
+    // The boundary as a ring of vertices and circle crossings.
+    enum Kind { kOutside, kInside, kEnter, kExit };
+    struct Event {
+      V2 at;
+      Kind kind;
+    };
+    std::vector<Event> ring;
+    bool any_crossing = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      const V2 a = poly[i], b = poly[(i + 1) % n];
+      const V2 ab = b - a, pa = a - p;
+      const double A = dot(ab, ab), B = dot(pa, ab), C = dot(pa, pa) - r2_;
+      const bool a_in = C <= 0.0, b_in = dot(b - p, b - p) - r2_ <= 0.0;
+      ring.push_back({a, a_in ? kInside : kOutside});
+      if (!(A > 0.0)) continue;
+      const double disc = std::max(0.0, B * B - A * C);
+      const double t1 = std::clamp((-B - std::sqrt(disc)) / A, 0.0, 1.0);
+      const double t2 = std::clamp((-B + std::sqrt(disc)) / A, 0.0, 1.0);
+      auto at = [&](double t) { return V2{a.x + t * ab.x, a.y + t * ab.y}; };
+      if (a_in && !b_in) {
+        ring.push_back({at(t2), kExit});
+      } else if (!a_in && b_in) {
+        ring.push_back({at(t1), kEnter});
+      } else if (!a_in && !b_in && B * B - A * C > 0.0 && t1 > 0.0 && t2 < 1.0) {
+        ring.push_back({at(t1), kEnter});
+        ring.push_back({at(t2), kExit});
+      } else {
+        continue;
+      }
+      any_crossing = true;
+    }
+    if (!any_crossing) {
+      // The disk lies inside the cell (or the whole cell inside the disk).
+      if (ring.front().kind == kOutside) result.push_back(poly);
+      return result;
+    }
+    // Each run of the boundary from an exit to the next entry, closed by its
+    // chord, is a convex piece.
+    const std::size_t m = ring.size();
+    for (std::size_t i = 0; i < m; ++i) {
+      if (ring[i].kind != kExit) continue;
+      std::vector<V2> piece{ring[i].at};
+      for (std::size_t j = (i + 1) % m; j != i; j = (j + 1) % m) {
+        piece.push_back(ring[j].at);
+        if (ring[j].kind == kEnter) break;
+      }
+      if (piece.size() >= 3 && area(piece) > 0.0) result.push_back(std::move(piece));
+    }
+    return result;
+  }
+
+  double weight(std::size_t k) const {
+    double w = 0.0;
+    for (const auto& piece : pieces(k)) w += area(piece);
+    return w;
+  }
+
+  /// One dart in the pieces of cell k; the sample if it is available.
+  std::optional<Point<2>> draw(std::size_t k) {
+    const auto parts = pieces(k);
+    if (parts.empty()) return std::nullopt;
+    double total = 0.0;
+    for (const auto& piece : parts) total += area(piece);
+    double u = rng_.uniform() * total;
+    const std::vector<V2>* chosen = &parts.back();
+    for (const auto& piece : parts) {
+      const double a = area(piece);
+      if (u < a) {
+        chosen = &piece;
+        break;
+      }
+      u -= a;
+    }
+    // A triangle of the piece's fan by area, then a uniform point in it.
+    const auto& poly = *chosen;
+    double fan = 0.0;
+    for (std::size_t i = 1; i + 1 < poly.size(); ++i) fan += 0.5 * cross(poly[i] - poly[0], poly[i + 1] - poly[0]);
+    double v = rng_.uniform() * fan;
+    std::size_t t = poly.size() - 2;
+    for (std::size_t i = 1; i + 1 < poly.size(); ++i) {
+      const double a = 0.5 * cross(poly[i] - poly[0], poly[i + 1] - poly[0]);
+      if (v < a) {
+        t = i;
+        break;
+      }
+      v -= a;
+    }
+    double s = rng_.uniform(), w = rng_.uniform();
+    if (s + w > 1.0) s = 1.0 - s, w = 1.0 - w;
+    const V2 e1 = poly[t] - poly[0], e2 = poly[t + 1] - poly[0];
+    const V2 x{poly[0].x + s * e1.x + w * e2.x, poly[0].y + s * e1.y + w * e2.y};
+    const V2 p{points_[k][0], points_[k][1]};
+    if (dot(x - p, x - p) < r2_) return std::nullopt;
+    const Point<2> q = domain_.wrap(Point<2>{{x.x, x.y}});
+    if (!domain_.contains(q) || grid_.any_closer_than(q, radius_)) return std::nullopt;
+    return q;
+  }
+
+  /// Adds sample q (drawn in the cell of sample `from`, or -1) and updates the
+  /// available areas of every cell it changed.
+  void insert(const Point<2>& q, std::int32_t from) {
+    const auto k = static_cast<std::int32_t>(points_.size());
+    if (points_.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max() / 9))
+      throw InvalidArgument("jones: too many samples");
+    points_.push_back(q);
+    grid_.insert(q);
+    misses_.push_back(0);
+    changed_.clear();
+    changed_.push_back(k);
+    for (int c = 0; c < copies_; ++c) {
+      double x = q[0], y = q[1];
+      if (copies_ > 1) {
+        x += (c / 3 - 1) * domain_.extent(0);
+        y += (c % 3 - 1) * domain_.extent(1);
+      }
+      // Located from the same copy of the cell the dart came from: O(1) walk.
+      const Vertex hint = from >= 0 ? handles_[static_cast<std::size_t>(from) * copies_ + c] : Vertex();
+      const Vertex v =
+          hint != Vertex() ? dt_.insert(Delaunay::Point(x, y), hint->face()) : dt_.insert(Delaunay::Point(x, y));
+      v->info() = k;
+      handles_.push_back(v);
+    }
+    // Neighbours only once all copies are in: the first sample's copies are
+    // collinear (a 1-dimensional triangulation) until the last ones arrive.
+    for (int c = 0; c < copies_; ++c) {
+      const Vertex v = handles_[static_cast<std::size_t>(k) * copies_ + c];
+      auto n = dt_.incident_vertices(v), done = n;
+      do {
+        if (!dt_.is_infinite(n) && n->info() >= 0) changed_.push_back(n->info());
+      } while (++n != done);
+    }
+    std::sort(changed_.begin(), changed_.end());
+    changed_.erase(std::unique(changed_.begin(), changed_.end()), changed_.end());
+    for (const std::int32_t j : changed_) {
+      const auto js = static_cast<std::size_t>(j);
+      tree_.set(js, weight(js));
+      misses_[js] = 0;
+    }
+  }
+
+  const Domain<2>& domain_;
+  double r2_, cover2_;
+  int copies_;
+  Grid<2> grid_;  // exact distance check on the stored coordinates
+  Rng rng_;
+  double radius_;
+  Delaunay dt_;
+  std::vector<Vertex> handles_;  // copies_ per sample; the central copy in the middle
+  PointSet<2> points_;
+  SumTree tree_;
+  std::vector<std::uint16_t> misses_;
+  std::vector<std::int32_t> changed_;
+};
+
+}  // namespace
+
+PointSet<2> jones(const JonesParams& params, const Domain<2>& domain, std::uint64_t seed) {
+  domain.validate();
+  require_radius_budget(domain, params.radius, params.max_points);
+  if (domain.periodic)
+    for (int i = 0; i < 2; ++i)
+      if (domain.extent(i) < 4.0 * params.radius)
+        throw InvalidArgument("jones: on a torus every period must be at least 4 radius; axis " + std::to_string(i) +
+                              " has " + std::to_string(domain.extent(i)) + " for radius " +
+                              std::to_string(params.radius));
+  return JonesSampler(params, domain, seed).run();
+}
+
+const Method& jones_method() {
+  static const Method method{
+      .name = "jones",
+      .summary = "Voronoi-based maximal dart throwing (Jones): cell chosen by free area, 2D, --radius",
+      .citation =
+          "T. R. Jones, Efficient generation of Poisson-disk sampling patterns, journal of graphics tools "
+          "11(2), 2006",
+      .takes_radius = true,
+      .maximal = true,
+      .dims = {2},
+      .run =
+          [](const GenerateRequest& r) {
+            const JonesParams params{*r.radius, r.max_points};
+            return PointCloud::from<2>(jones(params, r.domain<2>(), r.seed));
+          },
+  };
+  return method;
+}
+
+}  // namespace pds

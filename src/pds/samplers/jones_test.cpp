@@ -1,0 +1,105 @@
+#include "pds/samplers/jones.h"
+
+#include <gtest/gtest.h>
+
+#include "nn_statistics.h"
+#include "pds/analysis/distance.h"
+#include "pds/analysis/maximality.h"
+#include "pds/error.h"
+#include "pds/samplers/dart_throwing.h"
+
+namespace pds {
+namespace {
+
+Domain<2> test_domain(bool torus) { return Domain<2>{{{0.0, -1.0}}, {{1.25, 0.0}}, torus}; }
+
+TEST(Jones, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
+  const double r = 0.02;  // about 2200 samples
+  for (bool torus : {false, true}) {
+    const auto domain = test_domain(torus);
+    const auto points = jones({r}, domain, 5);
+    ASSERT_GT(points.size(), 1500u);
+    EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
+    for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
+    const auto mx = check_maximality(points, domain, r);
+    EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
+                            << mx.gap_distance;
+  }
+}
+
+TEST(Jones, SameSeedSamePointsOtherSeedOtherPoints) {
+  const auto domain = test_domain(true);
+  EXPECT_EQ(jones({0.05}, domain, 3), jones({0.05}, domain, 3));
+  EXPECT_NE(jones({0.05}, domain, 3), jones({0.05}, domain, 4));
+}
+
+TEST(Jones, RejectsBadInput) {
+  EXPECT_THROW(jones({0.0}, Domain<2>::unit(), 1), InvalidArgument);
+  EXPECT_THROW(jones({std::nan("")}, Domain<2>::unit(), 1), InvalidArgument);
+  EXPECT_THROW(jones({0.3}, Domain<2>::unit(true), 1), InvalidArgument);  // period < 4 radius
+}
+
+// Jones's process is random sequential adsorption run to saturation: each
+// sample is uniform over the free area, as a dart-throwing sample is. So the
+// first n samples of Jones and n samples of dart throwing are equal in law;
+// their nearest-neighbour statistics must agree within statistical error.
+TEST(Jones, PrefixHasTheLawOfDartThrowing) {
+  const double r = 0.02;
+  const auto domain = Domain<2>::unit(true);
+  const std::size_t n = 1400;  // dart throwing reaches it easily (saturation ~1741)
+  std::vector<double> jm, jf, dm, df;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    auto points = jones({r}, domain, seed);
+    ASSERT_GT(points.size(), n);
+    points.resize(n);
+    const auto j = testing_stats::summarize(points, domain, r);
+    DartThrowingParams dart{r};
+    dart.count = n;
+    const auto d = testing_stats::summarize(dart_throwing(dart, domain, 100 + seed), domain, r);
+    jm.push_back(j.mean_over_r);
+    jf.push_back(j.fraction_near);
+    dm.push_back(d.mean_over_r);
+    df.push_back(d.fraction_near);
+  }
+  EXPECT_LT(std::abs(testing_stats::welch_t(jm, dm)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(jf, df)), testing_stats::kMaxT);
+}
+
+// The same comparison on the radially averaged power spectrum: 48 annuli (up
+// to 1.3 times the frequency of the mean spacing, past the blue-noise peak),
+// one spectrum per set, Welch t per annulus.
+TEST(Jones, PrefixSpectrumMatchesDartThrowing) {
+  const double r = 0.02;
+  const auto domain = Domain<2>::unit(true);
+  const std::size_t n = 1400;
+  std::vector<std::vector<double>> jones_spectra, dart_spectra;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    auto points = jones({r}, domain, seed);
+    points.resize(n);
+    jones_spectra.push_back(testing_stats::radial_power(points, domain, 48));
+    DartThrowingParams dart{r};
+    dart.count = n;
+    dart_spectra.push_back(testing_stats::radial_power(dart_throwing(dart, domain, 100 + seed), domain, 48));
+  }
+  EXPECT_LT(testing_stats::max_spectrum_t(jones_spectra, dart_spectra), testing_stats::kMaxSpectrumT);
+}
+
+// Saturated random sequential adsorption of disks of diameter r covers a
+// fraction 0.5470735 of the plane (Zhang & Torquato, PRE 88, 2013), i.e.
+// 0.5470735 / (pi r^2 / 4) samples per unit area, rho = 0.7776. The count
+// over seeds must agree within its standard error.
+TEST(Jones, SaturationDensityMatchesTheJammingLimit) {
+  const double r = 0.02;
+  const auto domain = Domain<2>::unit(true);
+  const double expected = 0.5470735 / (M_PI * r * r / 4.0);
+  std::vector<double> counts;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) counts.push_back(double(jones({r}, domain, seed).size()));
+  double mean = 0.0, var = 0.0;
+  for (double c : counts) mean += c / 10.0;
+  for (double c : counts) var += (c - mean) * (c - mean) / 9.0;
+  EXPECT_LT(std::abs(mean - expected) / std::sqrt(var / 10.0), testing_stats::kMaxT)
+      << "mean count " << mean << " expected " << expected;
+}
+
+}  // namespace
+}  // namespace pds

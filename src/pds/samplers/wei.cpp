@@ -1,0 +1,469 @@
+// L.-Y. Wei, "Parallel Poisson disk sampling", ACM SIGGRAPH 2008 (ACM TOG
+// 27(3), article 20).
+//
+// Method, as in the paper:
+// - A grid whose cells have edge s <= r/sqrt(D), so a cell holds at most one
+//   sample and a sample covers its whole cell.
+// - Phase groups: cells whose indices agree modulo m = floor(r/s) + 2 along
+//   every axis. Two cells of a group are at least (m - 1) s > r apart, so their
+//   darts never conflict and the cells of a group are processed in parallel;
+//   the groups are visited one after another, in a random order per level.
+// - k trials per cell: a cell without a sample throws up to k uniform darts
+//   inside itself and keeps the first one at distance >= r from every sample
+//   in the neighbouring cells.
+// - Multi-resolution: after a level, each cell that is still empty is split
+//   into 2^D children; children covered by a single disk are dropped (no dart
+//   could land there) and the others get k trials at the next level. A dart in
+//   a child is stored in its level-0 cell, so the fine cells of one level-0
+//   cell are visited in turn by one task (random order), and the phase groups
+//   stay those of level 0 at every level.
+//
+// Determinism: each cell's generator is Rng(seed, level, cell); the group
+// order comes from Rng(seed, level); no decision depends on the thread count
+// or schedule (cells of one group never read what another writes: a dart looks
+// at cells within floor(r/s) + 1 of its own, and same-group cells are farther).
+// The output lists samples in level-0 cell order.
+//
+// Guarantees: minimum distance r; not maximal (a region covered only by the
+// union of several disks keeps its cells active but cannot be filled; gaps
+// remain where k trials per level all missed); coverage and rho are measured
+// in docs/wei.md.
+//
+// Complexity: O(N k) dart tests at level 0, and each finer level visits only
+// the cells that are still uncovered: O(N) work for a fixed number of levels,
+// 3^D barriers per level. Memory: one float offset per level-0 cell (about 3 per
+// sample in 2D) plus the active fine cells.
+#include "pds/samplers/wei.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "pds/error.h"
+#include "pds/rng.h"
+
+namespace pds {
+namespace {
+
+constexpr int kMaxLevels = 10;
+
+/// A cell of a finer level: its level-0 cell and its position inside it.
+struct FineCell {
+  std::uint32_t parent;
+  std::uint32_t sub;  // sub-cell index at this level, axis 0 fastest
+};
+
+template <int D>
+class WeiSampler {
+  using Offset = std::array<float, D>;
+
+ public:
+  WeiSampler(const WeiParams& params, const Domain<D>& domain, std::uint64_t seed)
+      : params_(params), domain_(domain), seed_(seed), r2_(params.radius * params.radius) {
+    const double r = params.radius;
+    double total = 1.0;
+    for (int i = 0; i < D; ++i) {
+      n_[i] = static_cast<int>(std::max(1.0, std::ceil(domain.extent(i) * std::sqrt(double(D)) / r)));
+      edge_[i] = domain.extent(i) / n_[i];
+      total *= n_[i];
+      // Cells within `reach` of a dart's cell hold every sample closer than r.
+      reach_[i] = static_cast<int>(std::floor(r / edge_[i])) + 1;
+      period_[i] = reach_[i] + 1;
+      // On a torus the last n mod period cells each get a group of their own
+      // along this axis, so that no two cells of a group meet across the seam.
+      const int full = domain.periodic ? n_[i] / period_[i] * period_[i] : n_[i];
+      groups_[i] = domain.periodic ? period_[i] + (n_[i] - full) : std::min(period_[i], n_[i]);
+      full_[i] = full;
+    }
+    if (total > static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2))
+      throw InvalidArgument("wei: radius " + std::to_string(r) +
+                            " is too small for the domain (grid above 2^31 cells)");
+    std::size_t stride = 1;
+    for (int i = 0; i < D; ++i) {
+      stride_[i] = stride;
+      stride *= static_cast<std::size_t>(n_[i]);
+    }
+    for (int i = 0; i < D; ++i) {
+      members_[i].assign(static_cast<std::size_t>(groups_[i]), {});
+      for (int c = 0; c < n_[i]; ++c) members_[i][static_cast<std::size_t>(group_coord(c, i))].push_back(c);
+    }
+    Offset empty;
+    empty.fill(std::numeric_limits<float>::quiet_NaN());
+    grid_.assign(stride, empty);
+  }
+
+  PointSet<D> run() {
+    const int threads = params_.threads > 0 ? params_.threads : tbb::task_arena::automatic;
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      for (int level = 0; level < params_.levels; ++level) {
+        if (level > 0) {
+          refine(level);
+          if (active_.empty()) break;
+        }
+        run_level(level);
+      }
+    });
+    active_ = {};  // freed before the output is built
+    PointSet<D> points;
+    std::size_t count = 0;
+    for (const auto& p : grid_) count += !std::isnan(p[0]);
+    points.reserve(count);
+    for (std::size_t cell = 0; cell < grid_.size(); ++cell)
+      if (!std::isnan(grid_[cell][0])) points.push_back(sample(coords(cell), grid_[cell]));
+    return points;
+  }
+
+ private:
+  int group_coord(int c, int axis) const {
+    return c < full_[axis] ? c % period_[axis] : period_[axis] + (c - full_[axis]);
+  }
+
+  std::array<int, D> coords(std::size_t cell) const {
+    std::array<int, D> c;
+    for (int i = 0; i < D; ++i) {
+      c[i] = static_cast<int>(cell % static_cast<std::size_t>(n_[i]));
+      cell /= static_cast<std::size_t>(n_[i]);
+    }
+    return c;
+  }
+
+  std::size_t group_of(std::size_t cell) const {
+    const auto c = coords(cell);
+    std::size_t g = 0, stride = 1;
+    for (int i = 0; i < D; ++i) {
+      g += static_cast<std::size_t>(group_coord(c[i], i)) * stride;
+      stride *= static_cast<std::size_t>(groups_[i]);
+    }
+    return g;
+  }
+
+  std::size_t group_count() const {
+    std::size_t g = 1;
+    for (int i = 0; i < D; ++i) g *= static_cast<std::size_t>(groups_[i]);
+    return g;
+  }
+
+  /// The samples of the cells within reach of `cell`: every sample closer
+  /// than r to a point of the cell. Gathered once per cell and reused by all
+  /// its darts and children.
+  void gather(const std::array<int, D>& cell, std::vector<Point<D>>& near) const {
+    near.clear();
+    for_each_near(cell, [&](const Point<D>& s) {
+      near.push_back(s);
+      return true;
+    });
+  }
+
+  bool free(const Point<D>& x, const std::vector<Point<D>>& near) const {
+    for (const Point<D>& s : near)
+      if (domain_.distance2(x, s) < r2_) return false;
+    return true;
+  }
+
+  /// Calls f(sample) for the samples of the cells within reach of `cell`;
+  /// f returns false to stop.
+  template <class F>
+  void for_each_near(const std::array<int, D>& cell, F&& f) const {
+    std::array<int, D> first, count, offset{};
+    for (int i = 0; i < D; ++i) {
+      int a = cell[i] - reach_[i], b = cell[i] + reach_[i];
+      if (domain_.periodic) {
+        if (b - a + 1 >= n_[i]) a = 0, b = n_[i] - 1;
+      } else {
+        a = std::max(a, 0);
+        b = std::min(b, n_[i] - 1);
+      }
+      first[i] = a;
+      count[i] = b - a + 1;
+    }
+    while (true) {
+      std::size_t index = 0;
+      for (int i = 0; i < D; ++i) {
+        int c = first[i] + offset[i];
+        if (c < 0)
+          c += n_[i];
+        else if (c >= n_[i])
+          c -= n_[i];
+        index += static_cast<std::size_t>(c) * stride_[i];
+      }
+      const Offset& o = grid_[index];
+      if (!std::isnan(o[0])) {
+        std::array<int, D> c;
+        for (int i = 0; i < D; ++i) {
+          c[i] = first[i] + offset[i];
+          c[i] += c[i] < 0 ? n_[i] : (c[i] >= n_[i] ? -n_[i] : 0);
+        }
+        if (!f(sample(c, o))) return;
+      }
+      int axis = 0;
+      while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
+      if (axis == D) return;
+    }
+  }
+
+  /// A stored sample: its level-0 cell's corner plus its float offset. These
+  /// doubles are the sample (every distance test and the output use them).
+  Point<D> sample(const std::array<int, D>& cell, const Offset& o) const {
+    Point<D> p;
+    for (int i = 0; i < D; ++i) p[i] = domain_.lo[i] + cell[i] * edge_[i] + static_cast<double>(o[i]);
+    return p;
+  }
+
+  /// Bounds of sub-cell `sub` of level-0 cell `cell` at `level`.
+  void sub_bounds(const std::array<int, D>& cell, std::uint32_t sub, int level, Point<D>& lo, Point<D>& hi) const {
+    const int side = 1 << level;
+    for (int i = 0; i < D; ++i) {
+      const int s = static_cast<int>(sub % static_cast<std::uint32_t>(side));
+      sub /= static_cast<std::uint32_t>(side);
+      const double base = domain_.lo[i] + cell[i] * edge_[i];
+      const double e = edge_[i] / side;
+      lo[i] = base + s * e;
+      // The last cell ends exactly at hi whatever the rounding.
+      hi[i] = (cell[i] == n_[i] - 1 && s == side - 1) ? domain_.hi[i] : base + (s + 1) * e;
+    }
+  }
+
+  /// Up to k darts in one cell; stores the first that fits and returns true.
+  bool throw_darts(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level,
+                   const std::vector<Point<D>>& near) {
+    Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, sub});
+    Point<D> lo, hi, x;
+    sub_bounds(c, sub, level, lo, hi);
+    for (int t = 0; t < params_.trials; ++t) {
+      for (int i = 0; i < D; ++i) x[i] = rng.uniform(lo[i], hi[i]);
+      // Stored as a float offset in its level-0 cell (half the memory of a
+      // point); the dart becomes the point that offset represents, which must
+      // still lie in its cell and in the domain (a rounding can push it out).
+      Offset o;
+      bool inside = true;
+      for (int i = 0; i < D; ++i) {
+        o[i] = static_cast<float>(x[i] - (domain_.lo[i] + c[i] * edge_[i]));
+        inside = inside && o[i] >= 0.0f && static_cast<double>(o[i]) < edge_[i];
+      }
+      if (!inside) continue;
+      const Point<D> q = sample(c, o);
+      if (domain_.contains(q) && free(q, near)) {
+        grid_[cell] = o;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// The phase groups of a level in a random order drawn from (seed, level).
+  std::vector<std::size_t> group_order(int level) const {
+    std::vector<std::size_t> order(group_count());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    Rng rng(seed_, {static_cast<std::uint64_t>(level), ~std::uint64_t{0}});
+    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
+    return order;
+  }
+
+  /// Level 0, one phase group: every cell whose coordinates fall in the
+  /// group's coordinate lists, enumerated without building a cell list.
+  void run_level0_group(std::size_t g) {
+    std::array<const std::vector<int>*, D> lists;
+    std::size_t total = 1;
+    for (int i = 0; i < D; ++i) {
+      lists[i] = &members_[i][g % static_cast<std::size_t>(groups_[i])];
+      g /= static_cast<std::size_t>(groups_[i]);
+      total *= lists[i]->size();
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 256), [&](const auto& range) {
+      std::vector<Point<D>> near;
+      for (std::size_t u = range.begin(); u != range.end(); ++u) {
+        std::array<int, D> c;
+        std::size_t rest = u, cell = 0;
+        for (int i = 0; i < D; ++i) {
+          c[i] = (*lists[i])[rest % lists[i]->size()];
+          rest /= lists[i]->size();
+          cell += static_cast<std::size_t>(c[i]) * stride_[i];
+        }
+        gather(c, near);
+        throw_darts(cell, c, 0, 0, near);
+      }
+    });
+  }
+
+  void run_level(int level) {
+    for (const std::size_t g : group_order(level)) {
+      if (level == 0) {
+        run_level0_group(g);
+        continue;
+      }
+      // active_ is sorted by group, and within a group the fine cells of one
+      // level-0 cell are contiguous: a unit of work is such a run. A chunk
+      // processes the runs that start inside it (running past its end if
+      // need be), so chunking never changes what is computed.
+      const std::size_t begin = group_begin_[g], end = group_begin_[g + 1];
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 256), [&](const auto& range) {
+        std::vector<std::uint32_t> order;
+        std::vector<Point<D>> near;
+        std::size_t i = range.begin();
+        while (i < range.end() && i > begin && active_[i].parent == active_[i - 1].parent) ++i;
+        while (i < range.end()) {
+          const std::uint32_t cell = active_[i].parent;
+          std::size_t j = i;
+          while (j < end && active_[j].parent == cell) ++j;
+          const auto c = coords(cell);
+          gather(c, near);
+          // The active fine cells of this level-0 cell, in a random order.
+          order.resize(j - i);
+          std::iota(order.begin(), order.end(), static_cast<std::uint32_t>(i));
+          Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, ~std::uint64_t{0}});
+          for (std::size_t n = order.size(); n > 1; --n) std::swap(order[n - 1], order[rng.below(n)]);
+          for (const std::uint32_t a : order)
+            if (throw_darts(cell, c, active_[a].sub, level, near)) break;
+          i = j;
+        }
+      });
+    }
+  }
+
+  /// True if one sample's disk contains the whole box [lo, hi].
+  bool covered(const Point<D>& lo, const Point<D>& hi, const std::vector<Point<D>>& near) const {
+    Point<D> centre;
+    std::array<double, D> half;
+    for (int i = 0; i < D; ++i) {
+      centre[i] = 0.5 * (lo[i] + hi[i]);
+      half[i] = 0.5 * (hi[i] - lo[i]);
+    }
+    for (const Point<D>& s : near) {
+      double far2 = 0.0;
+      for (int i = 0; i < D; ++i) {
+        const double d = std::abs(domain_.delta(s[i], centre[i], i)) + half[i];
+        far2 += d * d;
+      }
+      if (far2 <= r2_) return true;
+    }
+    return false;
+  }
+
+  /// Builds the active cells of `level` from those of level - 1: children of
+  /// still-empty cells that no single disk covers.
+  void refine(int level) {
+    // Level 1 refines every level-0 cell, later levels the active fine cells.
+    const bool from_grid = level == 1;
+    const std::size_t count = from_grid ? grid_.size() : active_.size();
+    auto parent_at = [&](std::size_t p) { return from_grid ? FineCell{static_cast<std::uint32_t>(p), 0} : active_[p]; };
+    // One bit per child, computed in parallel; compacted in order afterwards.
+    constexpr int kChildren = 1 << D;
+    std::vector<std::uint8_t> masks(count);
+    const int parent_side = 1 << (level - 1);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const auto& range) {
+      std::vector<Point<D>> near;
+      std::uint32_t gathered = std::numeric_limits<std::uint32_t>::max();
+      for (std::size_t p = range.begin(); p != range.end(); ++p) {
+        const FineCell f = parent_at(p);
+        masks[p] = 0;
+        if (!std::isnan(grid_[f.parent][0])) continue;  // a sample covers its whole level-0 cell
+        const auto c = coords(f.parent);
+        // Fine cells of one level-0 cell are contiguous: gather once for them.
+        if (f.parent != gathered) {
+          gather(c, near);
+          gathered = f.parent;
+        }
+        std::uint8_t mask = 0;
+        for (int child = 0; child < kChildren; ++child) {
+          Point<D> lo, hi;
+          sub_bounds(c, child_sub(f.sub, child, parent_side), level, lo, hi);
+          if (!covered(lo, hi, near)) mask |= static_cast<std::uint8_t>(1u << child);
+        }
+        masks[p] = mask;
+      }
+    });
+    // The new active cells, sorted by phase group (a counting sort, written in
+    // place), in parent order within a group.
+    group_begin_.assign(group_count() + 1, 0);
+    for (std::size_t p = 0; p < count; ++p)
+      if (masks[p])
+        group_begin_[group_of(parent_at(p).parent) + 1] += static_cast<std::size_t>(std::popcount(masks[p]));
+    for (std::size_t g = 0; g + 1 < group_begin_.size(); ++g) group_begin_[g + 1] += group_begin_[g];
+    std::vector<std::size_t> fill(group_begin_.begin(), group_begin_.end() - 1);
+    std::vector<FineCell> next(group_begin_.back());
+    for (std::size_t p = 0; p < count; ++p) {
+      if (!masks[p]) continue;
+      const FineCell f = parent_at(p);
+      std::size_t& at = fill[group_of(f.parent)];
+      for (int child = 0; child < kChildren; ++child)
+        if (masks[p] >> child & 1) next[at++] = {f.parent, child_sub(f.sub, child, parent_side)};
+    }
+    active_ = std::move(next);
+  }
+
+  /// The index at the next level of child `child` of sub-cell `sub`.
+  static std::uint32_t child_sub(std::uint32_t sub, int child, int parent_side) {
+    std::uint32_t result = 0, stride = 1;
+    for (int i = 0; i < D; ++i) {
+      const std::uint32_t s = sub % static_cast<std::uint32_t>(parent_side);
+      sub /= static_cast<std::uint32_t>(parent_side);
+      result += (2 * s + static_cast<std::uint32_t>(child >> i & 1)) * stride;
+      stride *= static_cast<std::uint32_t>(2 * parent_side);
+    }
+    return result;
+  }
+
+  const WeiParams& params_;
+  const Domain<D>& domain_;
+  std::uint64_t seed_;
+  double r2_;
+  std::array<int, D> n_, reach_, period_, groups_, full_;
+  std::array<double, D> edge_;
+  std::array<std::size_t, D> stride_;
+  std::array<std::vector<std::vector<int>>, D> members_;  // per axis: the coordinates of each group coordinate
+  // The sample of each level-0 cell as a float offset from the cell's corner
+  // (NaN if none): 8 bytes a cell in 2D instead of 16.
+  std::vector<Offset> grid_;
+  std::vector<FineCell> active_;          // this level's cells, sorted by phase group
+  std::vector<std::size_t> group_begin_;  // where each group's cells start in active_
+};
+
+}  // namespace
+
+template <int D>
+PointSet<D> wei(const WeiParams& params, const Domain<D>& domain, std::uint64_t seed) {
+  domain.validate();
+  require_radius_budget(domain, params.radius, params.max_points);
+  if (params.trials < 1) throw InvalidArgument("wei: trials must be at least 1, got " + std::to_string(params.trials));
+  if (params.levels < 1 || params.levels > kMaxLevels)
+    throw InvalidArgument("wei: levels must be in [1, " + std::to_string(kMaxLevels) + "], got " +
+                          std::to_string(params.levels));
+  if (params.threads < 0)
+    throw InvalidArgument("wei: threads must be 0 (all) or positive, got " + std::to_string(params.threads));
+  return WeiSampler<D>(params, domain, seed).run();
+}
+
+template PointSet<2> wei<2>(const WeiParams&, const Domain<2>&, std::uint64_t);
+template PointSet<3> wei<3>(const WeiParams&, const Domain<3>&, std::uint64_t);
+
+const Method& wei_method() {
+  static const Method method{
+      .name = "wei",
+      .summary = "parallel Poisson disk sampling (Wei): phase groups of grid cells, k darts per cell, multi-level",
+      .citation = "L.-Y. Wei, Parallel Poisson disk sampling, ACM SIGGRAPH 2008",
+      .takes_radius = true,
+      .params = {{"k", double(WeiParams{}.trials), 1, 1000, true, "dart trials per cell and level"},
+                 {"levels", double(WeiParams{}.levels), 1, kMaxLevels, true,
+                  "grid levels (each halves the cells of the last and retries where no single disk covers)"}},
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              const WeiParams params{*r.radius, static_cast<int>(r.param("k", WeiParams{}.trials)),
+                                     static_cast<int>(r.param("levels", WeiParams{}.levels)), r.threads, r.max_points};
+              return wei(params, domain, r.seed);
+            });
+          },
+  };
+  return method;
+}
+
+}  // namespace pds
