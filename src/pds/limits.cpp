@@ -6,17 +6,11 @@
 #include <sstream>
 
 #include "pds/analysis/relative_radius.h"
+#include "pds/detail/format.h"
 #include "pds/error.h"
 
 namespace pds {
 namespace {
-
-std::string format(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
 
 double physical_memory_bytes() {
   const long pages = sysconf(_SC_PHYS_PAGES);
@@ -29,7 +23,7 @@ double physical_memory_bytes() {
 
 void require_radius(double r, const char* name) {
   if (!std::isfinite(r) || !(r > 0.0))
-    throw InvalidArgument(std::string(name) + " must be positive and finite, got " + format(r));
+    throw InvalidArgument(std::string(name) + " must be positive and finite, got " + detail::format_number(r));
 }
 
 void require_count(std::uint64_t n, std::uint64_t max_points) {
@@ -41,15 +35,15 @@ void require_count(std::uint64_t n, std::uint64_t max_points) {
 
 void require_point_budget(double points, int dim, std::uint64_t max_points, const std::string& what) {
   if (!(points <= static_cast<double>(max_points)))
-    throw InvalidArgument(what + " could produce up to " + format(points) + " points, above the cap of " +
-                          std::to_string(max_points) + " (raise it with --max-points)");
+    throw InvalidArgument(what + " could produce up to " + detail::format_number(points) +
+                          " points, above the cap of " + std::to_string(max_points) + " (raise it with --max-points)");
   // The points themselves plus the working structures of a sampler: about
   // four copies. Refuse before allocating rather than fail half-way.
   const double bytes = points * dim * sizeof(double) * 4.0;
   const double available = physical_memory_bytes();
   if (bytes > available)
-    throw InvalidArgument(what + " would need about " + format(bytes / (1 << 30)) + " GiB, more than this machine's " +
-                          format(available / (1 << 30)) + " GiB");
+    throw InvalidArgument(what + " would need about " + detail::format_number(bytes / (1 << 30)) +
+                          " GiB, more than this machine's " + detail::format_number(available / (1 << 30)) + " GiB");
 }
 
 double packing_count(double volume, double r, int dim) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/samplers/best_candidate.h"
 #include "pds/samplers/bridson.h"
@@ -25,20 +26,10 @@ namespace pds {
 std::span<const Method> methods() {
   // The one table of methods: one line each.
   static const std::vector<Method> table = {
-      white_noise_method(),
-      regular_method(),
-      jittered_method(),
-      halton_method(),
-      hammersley_method(),
-      sobol_method(),
-      multi_jittered_method(),
-      latin_hypercube_method(),
-      dart_throwing_method(),
-      bridson_method(),
-      best_candidate_method(),
-      dunbar_humphreys_method(),
-      wei_method(),
-      jones_method(),
+      white_noise_method(),   regular_method(), jittered_method(),       halton_method(),
+      hammersley_method(),    sobol_method(),   multi_jittered_method(), latin_hypercube_method(),
+      dart_throwing_method(), bridson_method(), best_candidate_method(), dunbar_humphreys_method(),
+      wei_method(),           jones_method(),
   };
   return table;
 }
@@ -57,12 +48,6 @@ double GenerateRequest::param(const std::string& name, double fallback) const {
 }
 
 namespace {
-
-std::string format(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 void validate(const Method& m, const GenerateRequest& r) {
   if (std::find(m.dims.begin(), m.dims.end(), r.dim) == m.dims.end()) {
@@ -90,7 +75,8 @@ void validate(const Method& m, const GenerateRequest& r) {
   }
   if (r.threads < 0) throw InvalidArgument("threads must be 0 (all) or positive, got " + std::to_string(r.threads));
   for (const auto& [name, value] : r.params) {
-    const auto it = std::find_if(m.params.begin(), m.params.end(), [&](const MethodParam& p) { return p.name == name; });
+    const auto it =
+        std::find_if(m.params.begin(), m.params.end(), [&](const MethodParam& p) { return p.name == name; });
     if (it == m.params.end()) {
       std::string known;
       for (const MethodParam& p : m.params) known += (known.empty() ? "" : ", ") + p.name;
@@ -98,8 +84,9 @@ void validate(const Method& m, const GenerateRequest& r) {
                             (known.empty() ? std::string("it takes none") : "known: " + known) + ")");
     }
     if (!std::isfinite(value) || value < it->min || value > it->max || (it->integer && value != std::floor(value)))
-      throw InvalidArgument(m.name + ": parameter " + name + " must be " + (it->integer ? "an integer " : "") +
-                            "in [" + format(it->min) + ", " + format(it->max) + "], got " + format(value));
+      throw InvalidArgument(m.name + ": parameter " + name + " must be " + (it->integer ? "an integer " : "") + "in [" +
+                            detail::format_number(it->min) + ", " + detail::format_number(it->max) + "], got " +
+                            detail::format_number(value));
   }
 }
 

@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/grid.h"
 #include "pds/limits.h"
@@ -47,13 +48,6 @@
 
 namespace pds {
 namespace {
-
-std::string format(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
 
 template <int D, bool Periodic>
 class BridsonGrid {
@@ -68,7 +62,8 @@ class BridsonGrid {
       extent_[i] = domain.extent(i);
       half_[i] = 0.5 * extent_[i];
       const double n = std::max(1.0, std::ceil(extent_[i] / max_edge));
-      if (n > 1e9) throw InvalidArgument("bridson: radius " + format(radius) + " is too small for the domain");
+      if (n > 1e9)
+        throw InvalidArgument("bridson: radius " + detail::format_number(radius) + " is too small for the domain");
       cells_[i] = static_cast<int>(n);
       inv_edge_[i] = n / extent_[i];
     }
@@ -87,7 +82,7 @@ class BridsonGrid {
       stride_[i] = stride;
       total *= padded_[i];
       if (total > static_cast<double>(kMaxGridCells))
-        throw InvalidArgument("bridson: radius " + format(radius) + " needs more than " +
+        throw InvalidArgument("bridson: radius " + detail::format_number(radius) + " needs more than " +
                               std::to_string(kMaxGridCells) + " background cells for this domain");
       stride *= static_cast<std::size_t>(padded_[i]);
     }
@@ -335,8 +330,9 @@ PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::u
   if (!params.count) return points;
   if (points.size() < *params.count)
     throw InvalidArgument("bridson: only " + std::to_string(points.size()) + " points fit at radius " +
-                          format(params.radius) + " (k " + std::to_string(params.k) + "), fewer than the " +
-                          std::to_string(*params.count) + " requested; ask for fewer points or a smaller radius");
+                          detail::format_number(params.radius) + " (k " + std::to_string(params.k) +
+                          "), fewer than the " + std::to_string(*params.count) +
+                          " requested; ask for fewer points or a smaller radius");
   return thin(points, *params.count, seed);
 }
 

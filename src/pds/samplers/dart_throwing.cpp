@@ -30,6 +30,7 @@
 #include <sstream>
 #include <string>
 
+#include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/grid.h"
 #include "pds/limits.h"
@@ -39,13 +40,6 @@
 
 namespace pds {
 namespace {
-
-std::string format(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
 
 // The slides' check: every accepted sample, in order.
 template <int D>
@@ -96,8 +90,8 @@ PointSet<D> throw_darts(const DartThrowingParams& params, const Domain<D>& domai
     } else if (++failures >= bound) {
       if (!params.count) break;
       throw InvalidArgument("dart-throwing: placed only " + std::to_string(placed) + " of the " +
-                            std::to_string(wanted) + " points requested at radius " + format(params.radius) +
-                            " before " + std::to_string(bound) +
+                            std::to_string(wanted) + " points requested at radius " +
+                            detail::format_number(params.radius) + " before " + std::to_string(bound) +
                             " darts in a row were rejected: that many do not fit; ask for fewer points or a "
                             "smaller radius");
     }

@@ -5,25 +5,15 @@
 #include <string>
 
 #include "pds/analysis/relative_radius.h"
+#include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/limits.h"
 
 namespace pds {
-namespace {
-
-std::string format(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
-
-}  // namespace
-
 template <int D>
 double radius_for_count(std::uint64_t count, const Domain<D>& domain, double rho) {
   if (count == 0) throw InvalidArgument("count must be at least 1, got 0");
-  if (!(rho > 0.0 && rho <= 1.0)) throw InvalidArgument("rho must be in (0, 1], got " + format(rho));
+  if (!(rho > 0.0 && rho <= 1.0)) throw InvalidArgument("rho must be in (0, 1], got " + detail::format_number(rho));
   return 2.0 * rho * max_packing_radius(domain.volume(), static_cast<std::size_t>(count), D);
 }
 
@@ -32,8 +22,8 @@ void require_count_fits(const char* method, std::uint64_t count, double radius, 
   const double most = std::floor(packing_count(domain.volume(), radius, D));
   if (static_cast<double>(count) > most)
     throw InvalidArgument(std::string(method) + ": " + std::to_string(count) + " points cannot fit at radius " +
-                          format(radius) + " in this domain (the densest packing holds at most about " + format(most) +
-                          "); ask for fewer points or a smaller radius");
+                          detail::format_number(radius) + " in this domain (the densest packing holds at most about " +
+                          detail::format_number(most) + "); ask for fewer points or a smaller radius");
 }
 
 template double radius_for_count<2>(std::uint64_t, const Domain<2>&, double);
