@@ -105,7 +105,13 @@ PointCloud read_csv(std::istream& in, const std::string& name) {
 
 void write_csv(std::ostream& out, const PointCloud& points) {
   static const char* names[] = {"x", "y", "z", "w"};
-  for (int k = 0; k < points.dim; ++k) out << (k ? "," : "") << (k < 4 ? names[k] : "x" + std::to_string(k));
+  for (int k = 0; k < points.dim; ++k) {
+    if (k) out << ',';
+    if (k < 4)
+      out << names[k];
+    else
+      out << 'x' << k;
+  }
   out << '\n';
   char buffer[32];
   std::string line;
