@@ -67,6 +67,18 @@ void BM_DunbarHumphreysSectors(benchmark::State& state) {
 // Up to 10^6: 10^7 takes about 5 minutes at this rate.
 BENCHMARK(BM_DunbarHumphreysSectors)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
 
+/// Variant 2: scalloped sectors, the next sample uniform over all front regions.
+void BM_DunbarHumphreysGlobalSectors(benchmark::State& state) {
+  run(state, 0.694, [](double r) {
+    pds::DunbarHumphreysParams params{r};
+    params.variant = 2;
+    return pds::dunbar_humphreys(params, pds::Domain<2>::unit(true), 1);
+  });
+}
+// Up to 10^5 by default (10^6 takes minutes here; run it with --benchmark_filter and the
+// range below extended).
+BENCHMARK(BM_DunbarHumphreysGlobalSectors)->RangeMultiplier(10)->Range(10'000, 100'000)->Unit(benchmark::kMillisecond);
+
 /// Wei with state.range(1) threads.
 void BM_Wei(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(1));
