@@ -828,7 +828,7 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
 const Method& dunbar_humphreys_method() {
   static const Method method{
       .name = "dunbar-humphreys",
-      .summary = "boundary sampling or scalloped sectors (Dunbar & Humphreys): maximal Poisson disk set in O(N), 2D",
+      .summary = "boundary sampling or scalloped sectors (Dunbar & Humphreys): maximal Poisson disk sets, 2D",
       .citation =
           "D. Dunbar, G. Humphreys, A spatial data structure for fast Poisson-disk sample generation, "
           "ACM SIGGRAPH 2006",
