@@ -75,7 +75,7 @@ void BM_DunbarHumphreysGlobalSectors(benchmark::State& state) {
     return pds::dunbar_humphreys(params, pds::Domain<2>::unit(true), 1);
   });
 }
-// Up to 10^6 (about 2.5 minutes at that size on this machine).
+// Up to 10^6: about 5.5 minutes at that size on this machine (run() builds the set twice).
 BENCHMARK(BM_DunbarHumphreysGlobalSectors)
     ->RangeMultiplier(10)
     ->Range(10'000, 1'000'000)
