@@ -1,5 +1,5 @@
 // Benchmarks of the fast Poisson disk methods (issue 6): Dunbar & Humphreys
-// boundary sampling, Wei's parallel sampler and Jones's Voronoi sampler, on the
+// boundary sampling and scalloped sectors, Wei's parallel sampler and Jones's Voronoi sampler, on the
 // 2D unit torus. The argument is the target sample count N; the radius is set
 // from each method's measured density so that it makes about N samples, and
 // the counters report the real count, rho and the peak memory.
@@ -55,6 +55,31 @@ void BM_DunbarHumphreys(benchmark::State& state) {
   run(state, 0.875, [](double r) { return pds::dunbar_humphreys({r}, pds::Domain<2>::unit(true), 1); });
 }
 BENCHMARK(BM_DunbarHumphreys)->RangeMultiplier(10)->Range(10'000, 10'000'000)->Unit(benchmark::kMillisecond);
+
+/// The paper's scalloped sectors (variant 1): new samples uniform over the free annulus r..2r.
+void BM_DunbarHumphreysSectors(benchmark::State& state) {
+  run(state, 0.735, [](double r) {
+    pds::DunbarHumphreysParams params{r};
+    params.variant = 1;
+    return pds::dunbar_humphreys(params, pds::Domain<2>::unit(true), 1);
+  });
+}
+// Up to 10^6: 10^7 takes about 5 minutes at this rate.
+BENCHMARK(BM_DunbarHumphreysSectors)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
+
+/// Variant 2: scalloped sectors, the next sample uniform over all front regions.
+void BM_DunbarHumphreysGlobalSectors(benchmark::State& state) {
+  run(state, 0.694, [](double r) {
+    pds::DunbarHumphreysParams params{r};
+    params.variant = 2;
+    return pds::dunbar_humphreys(params, pds::Domain<2>::unit(true), 1);
+  });
+}
+// Up to 10^6: about 5.5 minutes at that size on this machine (run() builds the set twice).
+BENCHMARK(BM_DunbarHumphreysGlobalSectors)
+    ->RangeMultiplier(10)
+    ->Range(10'000, 1'000'000)
+    ->Unit(benchmark::kMillisecond);
 
 /// Wei with state.range(1) threads.
 void BM_Wei(benchmark::State& state) {

@@ -12,13 +12,14 @@ namespace pds {
 
 struct WeiParams {
   double radius = 0.01;  // minimum distance between samples, > 0
-  // k: dart trials per cell and level, >= 1. With levels = 4, k = 2 gives the
-  // density and nearest-neighbour distances of maximal dart throwing (measured,
-  // docs/wei.md); larger k or more levels pack denser than dart throwing can.
+  // k: dart passes per level, >= 1 (each pass visits every phase group, in a
+  // random order, and throws one dart per empty cell). With levels = 5, k = 2
+  // gives the density and nearest-neighbour distances of maximal dart throwing
+  // (measured, docs/wei.md); more levels pack denser than dart throwing can.
   int trials = 2;
   // Grid levels, in [1, 10]: level 0 has cells of edge <= radius/sqrt(D); each
   // further level halves them and retries only in cells no single disk covers.
-  int levels = 4;
+  int levels = 5;
   int threads = 0;                               // worker threads, 0 = all hardware threads; never changes the output
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
 };
@@ -27,9 +28,11 @@ struct WeiParams {
 ///
 /// A grid of cells of edge <= radius/sqrt(D) (one sample per cell at most) is
 /// split into phase groups whose cells are far enough apart that their darts
-/// cannot conflict; the groups run one after another, the cells of a group in
-/// parallel, each cell making `trials` dart throws. Finer levels halve the
-/// cells and retry where no single disk covers a cell yet.
+/// cannot conflict. Each of `trials` passes visits the groups one after
+/// another in a random order, the cells of a group in parallel, one dart per
+/// empty cell. Finer levels halve the cells and retry where no single disk
+/// covers a cell yet. The spectrum keeps spikes of the phase-group lattice
+/// (docs/wei.md).
 /// Guarantees: all pairs at least `radius` apart; every point in [lo, hi);
 /// same seed, same points for every thread count (each cell's generator comes
 /// from (seed, level, cell), never from the thread). Not maximal: small gaps

@@ -69,5 +69,131 @@ TEST(DunbarHumphreys, DenserThanMaximalDartThrowing) {
   EXPECT_GT(testing_stats::welch_t(dh, dart), 20.0);
 }
 
+// Variant 1, the paper's scalloped sectors over the annulus r..2r.
+DunbarHumphreysParams sectors(double r) {
+  DunbarHumphreysParams params{r};
+  params.variant = 1;
+  return params;
+}
+
+TEST(DunbarHumphreysSectors, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
+  const double r = 0.02;  // about 2300 samples
+  for (bool torus : {false, true}) {
+    const auto domain = test_domain(torus);
+    const auto points = dunbar_humphreys(sectors(r), domain, 5);
+    ASSERT_GT(points.size(), 2000u);
+    EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
+    for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
+    // Sectors narrower than 1e-12 rad are dropped: gaps under 1e-11 r.
+    const auto mx = check_maximality(points, domain, r, 1e-9 * r);
+    EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
+                            << mx.gap_distance;
+  }
+}
+
+TEST(DunbarHumphreysSectors, SameSeedSamePointsOtherSeedOtherPoints) {
+  const auto domain = test_domain(true);
+  EXPECT_EQ(dunbar_humphreys(sectors(0.03), domain, 3), dunbar_humphreys(sectors(0.03), domain, 3));
+  EXPECT_NE(dunbar_humphreys(sectors(0.03), domain, 3), dunbar_humphreys(sectors(0.03), domain, 4));
+  EXPECT_NE(dunbar_humphreys(sectors(0.03), domain, 3), dunbar_humphreys({0.03}, domain, 3));
+}
+
+TEST(DunbarHumphreysSectors, RejectsBadInput) {
+  EXPECT_THROW(dunbar_humphreys(sectors(0.17), Domain<2>::unit(true), 1), InvalidArgument);  // period <= 6 radius
+  EXPECT_NO_THROW(dunbar_humphreys(sectors(0.16), Domain<2>::unit(true), 1));
+  DunbarHumphreysParams bad{0.05};
+  bad.variant = 3;
+  EXPECT_THROW(dunbar_humphreys(bad, Domain<2>::unit(), 1), InvalidArgument);
+}
+
+// Against maximal dart throwing (Jones's sampler, random sequential adsorption
+// to saturation), 10 + 10 seeds on the unit torus. Each front sample's region
+// is uniform and exact, but the paper fills one front sample's annulus
+// completely before moving on, which is not the order of dart throwing:
+// measured 5.6% more samples (t = 30) and nearest neighbours closer to r
+// (mean 1.034 r against 1.054 r, t = -36); docs/dunbar-humphreys.md. The test
+// pins down what holds: the low-frequency spectrum (annuli 1-30, below the
+// blue-noise ring) matches dart throwing's; density and nearest-neighbour
+// distances differ beyond statistical error, in that direction; and the set is
+// far closer to dart throwing than boundary sampling (which packs 25% more).
+TEST(DunbarHumphreysSectors, ComparedWithMaximalDartThrowing) {
+  const double r = 0.02;
+  const auto domain = Domain<2>::unit(true);
+  std::vector<double> n_sectors, n_dart, n_boundary, nn_sectors, nn_dart;
+  std::vector<std::vector<double>> spectra_sectors, spectra_dart;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto s = dunbar_humphreys(sectors(r), domain, seed);
+    const auto j = jones({r}, domain, 100 + seed);
+    n_sectors.push_back(double(s.size()));
+    n_dart.push_back(double(j.size()));
+    n_boundary.push_back(double(dunbar_humphreys({r}, domain, seed).size()));
+    nn_sectors.push_back(testing_stats::summarize(s, domain, r).mean_over_r);
+    nn_dart.push_back(testing_stats::summarize(j, domain, r).mean_over_r);
+    spectra_sectors.push_back(testing_stats::radial_power(s, domain, 48));
+    spectra_dart.push_back(testing_stats::radial_power(j, domain, 48));
+  }
+  EXPECT_LT(testing_stats::max_spectrum_t(spectra_sectors, spectra_dart, 30), testing_stats::kMaxSpectrumT);
+  EXPECT_GT(testing_stats::welch_t(n_sectors, n_dart), testing_stats::kMaxT);
+  EXPECT_LT(testing_stats::welch_t(nn_sectors, nn_dart), -testing_stats::kMaxT);
+  EXPECT_LT(testing_stats::welch_t(n_sectors, n_boundary), -20.0);
+}
+
+// Variant 2, the scalloped sectors with the next sample drawn uniformly over
+// the union of all front regions.
+DunbarHumphreysParams global_sectors(double r) {
+  DunbarHumphreysParams params{r};
+  params.variant = 2;
+  return params;
+}
+
+TEST(DunbarHumphreysGlobalSectors, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
+  const double r = 0.02;  // about 2200 samples
+  for (bool torus : {false, true}) {
+    const auto domain = test_domain(torus);
+    const auto points = dunbar_humphreys(global_sectors(r), domain, 5);
+    ASSERT_GT(points.size(), 2000u);
+    EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
+    for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
+    const auto mx = check_maximality(points, domain, r, 1e-9 * r);
+    EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
+                            << mx.gap_distance;
+  }
+}
+
+TEST(DunbarHumphreysGlobalSectors, SameSeedSamePointsOtherSeedOtherPoints) {
+  const auto domain = test_domain(false);
+  EXPECT_EQ(dunbar_humphreys(global_sectors(0.03), domain, 3), dunbar_humphreys(global_sectors(0.03), domain, 3));
+  EXPECT_NE(dunbar_humphreys(global_sectors(0.03), domain, 3), dunbar_humphreys(global_sectors(0.03), domain, 4));
+  EXPECT_THROW(dunbar_humphreys(global_sectors(0.17), Domain<2>::unit(true), 1), InvalidArgument);
+}
+
+// Against maximal dart throwing (Jones's sampler), 10 + 10 seeds on the unit
+// torus: density, mean nearest-neighbour distance, fraction of neighbours
+// below 1.1 r, and every annulus of the radial power spectrum agree within
+// statistical error (measured t: -1.5, 0.1, -1.1, largest annulus 4.8).
+TEST(DunbarHumphreysGlobalSectors, MatchesMaximalDartThrowing) {
+  const double r = 0.02;
+  const auto domain = Domain<2>::unit(true);
+  std::vector<double> n_sectors, n_dart, nn_sectors, nn_dart, near_sectors, near_dart;
+  std::vector<std::vector<double>> spectra_sectors, spectra_dart;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto s = dunbar_humphreys(global_sectors(r), domain, seed);
+    const auto j = jones({r}, domain, 100 + seed);
+    n_sectors.push_back(double(s.size()));
+    n_dart.push_back(double(j.size()));
+    const auto ss = testing_stats::summarize(s, domain, r), js = testing_stats::summarize(j, domain, r);
+    nn_sectors.push_back(ss.mean_over_r);
+    nn_dart.push_back(js.mean_over_r);
+    near_sectors.push_back(ss.fraction_near);
+    near_dart.push_back(js.fraction_near);
+    spectra_sectors.push_back(testing_stats::radial_power(s, domain, 48));
+    spectra_dart.push_back(testing_stats::radial_power(j, domain, 48));
+  }
+  EXPECT_LT(std::abs(testing_stats::welch_t(n_sectors, n_dart)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(nn_sectors, nn_dart)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(near_sectors, near_dart)), testing_stats::kMaxT);
+  EXPECT_LT(testing_stats::max_spectrum_t(spectra_sectors, spectra_dart), testing_stats::kMaxSpectrumT);
+}
+
 }  // namespace
 }  // namespace pds

@@ -7,32 +7,38 @@
 // - Phase groups: cells whose indices agree modulo m = floor(r/s) + 2 along
 //   every axis. Two cells of a group are at least (m - 1) s > r apart, so their
 //   darts never conflict and the cells of a group are processed in parallel;
-//   the groups are visited one after another, in a random order per level.
-// - k trials per cell: a cell without a sample throws up to k uniform darts
-//   inside itself and keeps the first one at distance >= r from every sample
-//   in the neighbouring cells.
+//   the groups are visited one after another.
+// - k trials per cell, spread over k passes as in the paper: each pass visits
+//   every phase group, in a random order drawn afresh for each (level, pass),
+//   and each cell still without a sample throws one uniform dart inside itself,
+//   kept if it is at distance >= r from every sample in the neighbouring cells.
+//   (Wei: a fixed group order, or k darts in one visit, biases the pattern.)
 // - Multi-resolution: after a level, each cell that is still empty is split
 //   into 2^D children; children covered by a single disk are dropped (no dart
-//   could land there) and the others get k trials at the next level. A dart in
-//   a child is stored in its level-0 cell, so the fine cells of one level-0
-//   cell are visited in turn by one task (random order), and the phase groups
-//   stay those of level 0 at every level.
+//   could land there) and the others get k passes at the next level (in a
+//   pass, a level-0 cell's active children take one dart each, in a random
+//   order, until one fits). A dart in a child is stored in its level-0 cell,
+//   so the fine cells of one level-0 cell are visited in turn by one task, and
+//   the phase groups stay those of level 0 at every level.
 //
-// Determinism: each cell's generator is Rng(seed, level, cell); the group
-// order comes from Rng(seed, level); no decision depends on the thread count
-// or schedule (cells of one group never read what another writes: a dart looks
+// Determinism: each dart's generator is Rng(seed, level, cell, sub, pass);
+// the group order comes from Rng(seed, level, pass); no decision depends on
+// the thread count or schedule (cells of one group never read what another writes: a dart looks
 // at cells within floor(r/s) + 1 of its own, and same-group cells are farther).
 // The output lists samples in level-0 cell order.
 //
 // Guarantees: minimum distance r; not maximal (a region covered only by the
 // union of several disks keeps its cells active but cannot be filled; gaps
 // remain where k trials per level all missed); coverage and rho are measured
-// in docs/wei.md.
+// in docs/wei.md. Even with the paper's traversal the first pass fills nearly
+// every cell of the first group, a jittered lattice of period m cells that
+// stays visible as spikes in the spectrum at n0/m cycles per extent
+// (measured, docs/wei.md; tested).
 //
 // Complexity: O(N k) dart tests at level 0, and each finer level visits only
 // the cells that are still uncovered: O(N) work for a fixed number of levels,
-// 3^D barriers per level. Memory: one float offset per level-0 cell (about 3 per
-// sample in 2D) plus the active fine cells.
+// k 3^D barriers per level. Memory: one float offset per level-0 cell (about 3
+// per sample in 2D) plus the active fine cells.
 #include "pds/samplers/wei.h"
 
 #include <tbb/blocked_range.h>
@@ -232,45 +238,41 @@ class WeiSampler {
     }
   }
 
-  /// Up to k darts in one cell; stores the first that fits and returns true.
-  bool throw_darts(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level,
-                   const std::vector<Point<D>>& near) {
-    Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, sub});
+  /// The dart of `pass` in one cell; stores it and returns true if it fits.
+  bool throw_dart(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level, int pass,
+                  const std::vector<Point<D>>& near) {
+    Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, sub, static_cast<std::uint64_t>(pass)});
     Point<D> lo, hi, x;
     sub_bounds(c, sub, level, lo, hi);
-    for (int t = 0; t < params_.trials; ++t) {
-      for (int i = 0; i < D; ++i) x[i] = rng.uniform(lo[i], hi[i]);
-      // Stored as a float offset in its level-0 cell (half the memory of a
-      // point); the dart becomes the point that offset represents, which must
-      // still lie in its cell and in the domain (a rounding can push it out).
-      Offset o;
-      bool inside = true;
-      for (int i = 0; i < D; ++i) {
-        o[i] = static_cast<float>(x[i] - (domain_.lo[i] + c[i] * edge_[i]));
-        inside = inside && o[i] >= 0.0f && static_cast<double>(o[i]) < edge_[i];
-      }
-      if (!inside) continue;
-      const Point<D> q = sample(c, o);
-      if (domain_.contains(q) && free(q, near)) {
-        grid_[cell] = o;
-        return true;
-      }
+    for (int i = 0; i < D; ++i) x[i] = rng.uniform(lo[i], hi[i]);
+    // Stored as a float offset in its level-0 cell (half the memory of a
+    // point); the dart becomes the point that offset represents, which must
+    // still lie in its cell and in the domain (a rounding can push it out).
+    Offset o;
+    bool inside = true;
+    for (int i = 0; i < D; ++i) {
+      o[i] = static_cast<float>(x[i] - (domain_.lo[i] + c[i] * edge_[i]));
+      inside = inside && o[i] >= 0.0f && static_cast<double>(o[i]) < edge_[i];
     }
-    return false;
+    if (!inside) return false;
+    const Point<D> q = sample(c, o);
+    if (!domain_.contains(q) || !free(q, near)) return false;
+    grid_[cell] = o;
+    return true;
   }
 
-  /// The phase groups of a level in a random order drawn from (seed, level).
-  std::vector<std::size_t> group_order(int level) const {
+  /// The phase groups of a pass in a random order drawn from (seed, level, pass).
+  std::vector<std::size_t> group_order(int level, int pass) const {
     std::vector<std::size_t> order(group_count());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    Rng rng(seed_, {static_cast<std::uint64_t>(level), ~std::uint64_t{0}});
+    Rng rng(seed_, {static_cast<std::uint64_t>(level), static_cast<std::uint64_t>(pass), ~std::uint64_t{0}});
     for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
     return order;
   }
 
   /// Level 0, one phase group: every cell whose coordinates fall in the
   /// group's coordinate lists, enumerated without building a cell list.
-  void run_level0_group(std::size_t g) {
+  void run_level0_group(std::size_t g, int pass) {
     std::array<const std::vector<int>*, D> lists;
     std::size_t total = 1;
     for (int i = 0; i < D; ++i) {
@@ -288,45 +290,54 @@ class WeiSampler {
           rest /= lists[i]->size();
           cell += static_cast<std::size_t>(c[i]) * stride_[i];
         }
+        if (!std::isnan(grid_[cell][0])) continue;
         gather(c, near);
-        throw_darts(cell, c, 0, 0, near);
+        throw_dart(cell, c, 0, 0, pass, near);
       }
     });
   }
 
   void run_level(int level) {
-    for (const std::size_t g : group_order(level)) {
-      if (level == 0) {
-        run_level0_group(g);
-        continue;
-      }
-      // active_ is sorted by group, and within a group the fine cells of one
-      // level-0 cell are contiguous: a unit of work is such a run. A chunk
-      // processes the runs that start inside it (running past its end if
-      // need be), so chunking never changes what is computed.
-      const std::size_t begin = group_begin_[g], end = group_begin_[g + 1];
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 256), [&](const auto& range) {
-        std::vector<std::uint32_t> order;
-        std::vector<Point<D>> near;
-        std::size_t i = range.begin();
-        while (i < range.end() && i > begin && active_[i].parent == active_[i - 1].parent) ++i;
-        while (i < range.end()) {
-          const std::uint32_t cell = active_[i].parent;
-          std::size_t j = i;
-          while (j < end && active_[j].parent == cell) ++j;
-          const auto c = coords(cell);
-          gather(c, near);
-          // The active fine cells of this level-0 cell, in a random order.
-          order.resize(j - i);
-          std::iota(order.begin(), order.end(), static_cast<std::uint32_t>(i));
-          Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, ~std::uint64_t{0}});
-          for (std::size_t n = order.size(); n > 1; --n) std::swap(order[n - 1], order[rng.below(n)]);
-          for (const std::uint32_t a : order)
-            if (throw_darts(cell, c, active_[a].sub, level, near)) break;
-          i = j;
-        }
-      });
+    for (int pass = 0; pass < params_.trials; ++pass)
+      for (const std::size_t g : group_order(level, pass)) run_group(level, pass, g);
+  }
+
+  /// One pass over one phase group: one dart in each cell without a sample.
+  void run_group(int level, int pass, std::size_t g) {
+    if (level == 0) {
+      run_level0_group(g, pass);
+      return;
     }
+    // active_ is sorted by group, and within a group the fine cells of one
+    // level-0 cell are contiguous: a unit of work is such a run. A chunk
+    // processes the runs that start inside it (running past its end if
+    // need be), so chunking never changes what is computed.
+    const std::size_t begin = group_begin_[g], end = group_begin_[g + 1];
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 256), [&](const auto& range) {
+      std::vector<std::uint32_t> order;
+      std::vector<Point<D>> near;
+      std::size_t i = range.begin();
+      while (i < range.end() && i > begin && active_[i].parent == active_[i - 1].parent) ++i;
+      while (i < range.end()) {
+        const std::uint32_t cell = active_[i].parent;
+        std::size_t j = i;
+        while (j < end && active_[j].parent == cell) ++j;
+        if (!std::isnan(grid_[cell][0])) {  // filled by an earlier pass
+          i = j;
+          continue;
+        }
+        const auto c = coords(cell);
+        gather(c, near);
+        // The active fine cells of this level-0 cell, in a random order.
+        order.resize(j - i);
+        std::iota(order.begin(), order.end(), static_cast<std::uint32_t>(i));
+        Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, static_cast<std::uint64_t>(pass), ~std::uint64_t{0}});
+        for (std::size_t n = order.size(); n > 1; --n) std::swap(order[n - 1], order[rng.below(n)]);
+        for (const std::uint32_t a : order)
+          if (throw_dart(cell, c, active_[a].sub, level, pass, near)) break;
+        i = j;
+      }
+    });
   }
 
   /// True if one sample's disk contains the whole box [lo, hi].
@@ -448,10 +459,13 @@ template PointSet<3> wei<3>(const WeiParams&, const Domain<3>&, std::uint64_t);
 const Method& wei_method() {
   static const Method method{
       .name = "wei",
-      .summary = "parallel Poisson disk sampling (Wei): phase groups of grid cells, k darts per cell, multi-level",
+      .summary =
+          "parallel Poisson disk sampling (Wei): phase groups of grid cells in random order, k passes of one dart per "
+          "cell, multi-level",
       .citation = "L.-Y. Wei, Parallel Poisson disk sampling, ACM SIGGRAPH 2008",
       .takes_radius = true,
-      .params = {{"k", double(WeiParams{}.trials), 1, 1000, true, "dart trials per cell and level"},
+      .params = {{"k", double(WeiParams{}.trials), 1, 1000, true,
+                  "dart passes per level (each visits the phase groups in a random order, one dart per empty cell)"},
                  {"levels", double(WeiParams{}.levels), 1, kMaxLevels, true,
                   "grid levels (each halves the cells of the last and retries where no single disk covers)"}},
       .run =

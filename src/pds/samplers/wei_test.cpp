@@ -117,10 +117,14 @@ TEST(Wei, DefaultsMatchMaximalDartThrowing) {
 }
 
 // And on the radially averaged power spectrum below the phase-group
-// frequency. The groups repeat every 3 level-0 cells, and that lattice shows
-// as peaks at n0/3 cycles per extent and its harmonics (here n0 = 71: peaks
-// near 24, 34 and 47; docs/wei.md). Below it, where clustering would show, the
-// power must match maximal dart throwing's: annuli 1-21, Welch t each.
+// frequency. The groups repeat every 3 level-0 cells; even with the paper's
+// traversal (k passes, groups in a fresh random order each pass) the first
+// group visited gets a sample in nearly every cell, and that jittered lattice
+// shows as peaks at n0/3 cycles per extent and its harmonics (here n0 = 71:
+// peaks near 24, 34 and 47; docs/wei.md). So the full spectrum is NOT dart
+// throwing's, and the test says so: below the lattice, where clustering would
+// show, the power must match maximal dart throwing's (annuli 1-21, Welch t
+// each), and at the lattice it must be clearly higher.
 TEST(Wei, DefaultSpectrumBelowThePhaseLatticeMatchesMaximalDartThrowing) {
   const double r = 0.02;
   const auto domain = Domain<2>::unit(true);
