@@ -467,6 +467,18 @@ class ScallopedRegion {
   std::vector<double> breaks_;
 };
 
+/// The point at polar offset (rad, theta) from p, wrapped into the domain, in
+/// q; true when it lies inside and at least r (r2 = r^2) from p and from every
+/// sample listed in `neighbours`.
+bool polar_candidate(const Domain<2>& domain, const PointSet<2>& points, const std::vector<std::int32_t>& neighbours,
+                     const Point<2>& p, double rad, double theta, double r2, Point<2>& q) {
+  q = domain.wrap(Point<2>{{p[0] + rad * std::cos(theta), p[1] + rad * std::sin(theta)}});
+  if (!domain.contains(q) || domain.distance2(p, q) < r2) return false;
+  for (const std::int32_t j : neighbours)
+    if (domain.distance2(q, points[static_cast<std::size_t>(j)]) < r2) return false;
+  return true;
+}
+
 /// The available region of sample `pi` (walls first, then the samples
 /// within 3r, nearest first: they remove the most, which leaves fewer sectors
 /// for the rest to cut), and those samples in `neighbours`.
@@ -589,13 +601,8 @@ PointSet<2> global_scalloped_sampling(const DunbarHumphreysParams& params, const
     if (area <= 0.0 || rng.uniform() * stored >= area) continue;
     const Point<2> p = points[pick];
     const auto [theta, rad] = region.sample(rng);
-    const Point<2> q = domain.wrap(Point<2>{{p[0] + rad * std::cos(theta), p[1] + rad * std::sin(theta)}});
-    bool ok = domain.contains(q) && domain.distance2(p, q) >= r2;
-    for (const std::int32_t j : neighbours) {
-      if (!ok) break;
-      ok = domain.distance2(q, points[static_cast<std::size_t>(j)]) >= r2;
-    }
-    if (!ok) {
+    Point<2> q;
+    if (!polar_candidate(domain, points, neighbours, p, rad, theta, r2, q)) {
       // Only rounding on a sector's boundary can get here; bounded overall.
       if (++rejected > 1000 + points.size())
         throw Failure("dunbar-humphreys: too many candidates rejected by rounding (radius " + std::to_string(r) + ")");
@@ -654,14 +661,8 @@ PointSet<2> scalloped_sector_sampling(const DunbarHumphreysParams& params, const
     int rejected = 0;
     while (!region.empty()) {
       const auto [theta, rad] = region.sample(rng);
-      const double dx = rad * std::cos(theta), dy = rad * std::sin(theta);
-      const Point<2> q = domain.wrap(Point<2>{{p[0] + dx, p[1] + dy}});
-      bool ok = domain.contains(q) && domain.distance2(p, q) >= r2;
-      for (const std::int32_t j : neighbours) {
-        if (!ok) break;
-        ok = domain.distance2(q, points[static_cast<std::size_t>(j)]) >= r2;
-      }
-      if (!ok) {
+      Point<2> q;
+      if (!polar_candidate(domain, points, neighbours, p, rad, theta, r2, q)) {
         // Only rounding on a sector's boundary can get here (the sectors are
         // exact): a new draw lands elsewhere. Bounded per front sample.
         if (++rejected > 1000)
@@ -800,14 +801,8 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
     int rejected = 0;
     while (!arcs.empty()) {
       const double theta = arcs.sample(rng);
-      const double dx = rc * std::cos(theta), dy = rc * std::sin(theta);
-      const Point<2> q = domain.wrap(Point<2>{{p[0] + dx, p[1] + dy}});
-      bool ok = domain.contains(q) && domain.distance2(p, q) >= r2;
-      for (const std::int32_t j : neighbours) {
-        if (!ok) break;
-        ok = domain.distance2(q, points[static_cast<std::size_t>(j)]) >= r2;
-      }
-      if (!ok) {
+      Point<2> q;
+      if (!polar_candidate(domain, points, neighbours, p, rc, theta, r2, q)) {
         // Only rounding at an arc's end or at a wall can get here: drop a
         // sliver of the circle around theta. Bounded per front sample.
         if (++rejected > 64)
