@@ -11,8 +11,9 @@ namespace pds::cli {
 void add_domain_options(CLI::App& command, DomainOptions& options, bool dim_option) {
   if (dim_option) command.add_option("--dim,-d", options.dim, "Dimension (2 or 3)")->capture_default_str();
   command.add_flag("--torus", options.torus, "Periodic domain: distances wrap around the bounds");
-  command.add_option("--bounds", options.bounds,
-                     "Domain box as lo then hi corners, e.g. 0,0,2,1 (default: the unit square/cube)")
+  command
+      .add_option("--bounds", options.bounds,
+                  "Domain box as lo then hi corners, e.g. 0,0,2,1 (default: the unit square/cube)")
       ->delimiter(',');
 }
 
@@ -32,7 +33,9 @@ std::string methods_help() {
   os << "Methods (pds generate METHOD):\n";
   for (const Method& m : methods()) {
     os << "  " << m.name << std::string(m.name.size() < 18 ? 18 - m.name.size() : 1, ' ') << m.summary << "\n";
-    std::string sizing = m.takes_count && m.takes_radius ? "--count or --radius" : m.takes_count ? "--count" : "--radius";
+    std::string sizing = m.takes_count && m.takes_radius ? "--count or --radius"
+                         : m.takes_count                 ? "--count"
+                                                         : "--radius";
     os << std::string(20, ' ') << "takes " << sizing << (m.maximal ? "; maximal" : "")
        << (m.deterministic ? "; no randomness" : "") << "\n";
     for (const MethodParam& p : m.params)
@@ -58,9 +61,7 @@ std::string methods_markdown() {
       v << p.default_value;
       params += (params.empty() ? "" : "; ") + ("`" + p.name + "` (" + v.str() + ") " + p.help);
     }
-    const std::string sizing = m.takes_count && m.takes_radius ? "count or radius"
-                               : m.takes_count                 ? "count"
-                                                               : "radius";
+    const std::string sizing = m.takes_count && m.takes_radius ? "count or radius" : m.takes_count ? "count" : "radius";
     os << "| `" << m.name << "` | " << m.summary << " | " << sizing << " | " << dims << " | "
        << (m.maximal ? "yes" : "no") << " | " << (params.empty() ? "none" : params) << " | "
        << (m.citation.empty() ? "-" : m.citation) << " |\n";

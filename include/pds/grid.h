@@ -31,8 +31,7 @@ class Grid {
   /// A grid whose cells have edge at most `max_cell_edge` along every axis.
   /// Throws InvalidArgument if the edge is not positive and finite or if more
   /// than `max_cells` cells would be needed.
-  Grid(const Domain<D>& domain, double max_cell_edge, std::size_t max_cells = kMaxGridCells)
-      : domain_(domain) {
+  Grid(const Domain<D>& domain, double max_cell_edge, std::size_t max_cells = kMaxGridCells) : domain_(domain) {
     if (!(max_cell_edge > 0.0) || !std::isfinite(max_cell_edge))
       throw InvalidArgument("grid: cell edge must be positive and finite, got " + std::to_string(max_cell_edge));
     double total = 1.0;

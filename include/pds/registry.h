@@ -53,7 +53,7 @@ struct Method {
   std::string citation;  // the paper, or "" for elementary patterns
   bool takes_count = false;
   bool takes_radius = false;
-  bool maximal = false;  // promises that no point of the domain is farther than radius from a sample
+  bool maximal = false;        // promises that no point of the domain is farther than radius from a sample
   bool deterministic = false;  // ignores the seed
   std::vector<int> dims{2, 3};
   std::vector<MethodParam> params;

@@ -25,7 +25,7 @@ void check_against_brute_force(const Domain<D>& domain, double grid_radius, std:
   Rng rng(seed + 1);
   for (int q = 0; q < 200; ++q) {
     Point<D> p = uniform_point(rng, domain);
-    if (q % 4 == 0) p[0] = domain.lo[0];                              // on a face
+    if (q % 4 == 0) p[0] = domain.lo[0];                               // on a face
     if (q % 4 == 1) p[D - 1] = std::nextafter(domain.hi[D - 1], 0.0);  // on the far face
     for (double r : {0.5 * grid_radius, grid_radius, 2.7 * grid_radius, 0.6 * domain.extent(0)}) {
       std::vector<int> found, expected;
@@ -38,9 +38,8 @@ void check_against_brute_force(const Domain<D>& domain, double grid_radius, std:
         if (domain.distance2(p, points[i]) <= r * r) expected.push_back(static_cast<int>(i));
       std::sort(found.begin(), found.end());
       EXPECT_EQ(found, expected) << domain << " query " << p << " r " << r;
-      EXPECT_EQ(grid.any_closer_than(p, r), std::any_of(expected.begin(), expected.end(), [&](int i) {
-                  return domain.distance2(p, points[i]) < r * r;
-                }));
+      EXPECT_EQ(grid.any_closer_than(p, r), std::any_of(expected.begin(), expected.end(),
+                                                        [&](int i) { return domain.distance2(p, points[i]) < r * r; }));
     }
   }
 }

@@ -20,7 +20,7 @@ struct NearestNeighbors {
 
 struct MinDistance {
   double distance = std::numeric_limits<double>::infinity();  // inf for fewer than two points
-  std::size_t i = 0, j = 0;  // a pair at that distance (i < j)
+  std::size_t i = 0, j = 0;                                   // a pair at that distance (i < j)
 };
 
 /// For every point, its exact nearest other point under the domain's metric.

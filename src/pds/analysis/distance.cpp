@@ -83,9 +83,9 @@ MinDistance min_distance_brute_force(const PointSet<D>& points, const Domain<D>&
   return m;
 }
 
-#define PDS_INSTANTIATE(D)                                                                 \
-  template NearestNeighbors nearest_neighbors<D>(const PointSet<D>&, const Domain<D>&);   \
-  template MinDistance min_distance<D>(const PointSet<D>&, const Domain<D>&);             \
+#define PDS_INSTANTIATE(D)                                                              \
+  template NearestNeighbors nearest_neighbors<D>(const PointSet<D>&, const Domain<D>&); \
+  template MinDistance min_distance<D>(const PointSet<D>&, const Domain<D>&);           \
   template MinDistance min_distance_brute_force<D>(const PointSet<D>&, const Domain<D>&);
 PDS_INSTANTIATE(2)
 PDS_INSTANTIATE(3)

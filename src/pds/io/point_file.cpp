@@ -51,7 +51,8 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    fields.push_back(
+        trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
     if (comma == std::string_view::npos) return fields;
     start = comma + 1;
   }
@@ -229,9 +230,8 @@ PointCloud read_npy(std::istream& in, const std::string& name) {
 
 void write_npy(std::ostream& out, const PointCloud& points, NpyType type) {
   const bool f32 = type == NpyType::Float32;
-  std::string header = std::string("{'descr': '") + (f32 ? "<f4" : "<f8") +
-                       "', 'fortran_order': False, 'shape': (" + std::to_string(points.size()) + ", " +
-                       std::to_string(points.dim) + "), }";
+  std::string header = std::string("{'descr': '") + (f32 ? "<f4" : "<f8") + "', 'fortran_order': False, 'shape': (" +
+                       std::to_string(points.size()) + ", " + std::to_string(points.dim) + "), }";
   // Pad with spaces and a newline so the data starts on a 64-byte boundary.
   const std::size_t preamble = 10;
   const std::size_t total = (preamble + header.size() + 1 + 63) / 64 * 64;

@@ -93,8 +93,8 @@ TEST_F(PointFiles, NpyHeaderIsWhatNumpyWrites) {
 
 TEST_F(PointFiles, NpyReadsFortranOrderAndBigEndian) {
   auto npy = [&](const std::string& descr, bool fortran, const std::string& payload) {
-    std::istringstream is(npy_preamble("{'descr': '" + descr + "', 'fortran_order': " +
-                                       (fortran ? "True" : "False") + ", 'shape': (2, 2), }") +
+    std::istringstream is(npy_preamble("{'descr': '" + descr + "', 'fortran_order': " + (fortran ? "True" : "False") +
+                                       ", 'shape': (2, 2), }") +
                           payload);
     return read_npy(is, "test.npy");
   };

@@ -42,14 +42,15 @@ const Method& jittered_method() {
       .summary = "uniform jitter: one uniform point in each cell of a grid of --count near-cubic strata",
       .citation = "R. L. Cook, Stochastic sampling in computer graphics, ACM TOG 5(1), 1986",
       .takes_count = true,
-      .run = [](const GenerateRequest& r) {
-        return run_typed(r, [&](const auto& domain) {
-          const auto cells = strata_for_count(domain, *r.count);
-          JitteredParams params;
-          std::copy(cells.begin(), cells.end(), params.cells.begin());
-          return jittered(params, domain, r.seed);
-        });
-      },
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              const auto cells = strata_for_count(domain, *r.count);
+              JitteredParams params;
+              std::copy(cells.begin(), cells.end(), params.cells.begin());
+              return jittered(params, domain, r.seed);
+            });
+          },
   };
   return method;
 }

@@ -18,9 +18,10 @@ const Method& white_noise_method() {
       .name = "random",
       .summary = "uniform white noise (the slides' Poisson pattern): independent uniform points",
       .takes_count = true,
-      .run = [](const GenerateRequest& r) {
-        return run_typed(r, [&](const auto& domain) { return white_noise({*r.count}, domain, r.seed); });
-      },
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) { return white_noise({*r.count}, domain, r.seed); });
+          },
   };
   return method;
 }

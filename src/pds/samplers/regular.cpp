@@ -35,19 +35,20 @@ const Method& regular_method() {
       .takes_count = true,
       .takes_radius = true,
       .deterministic = true,
-      .run = [](const GenerateRequest& r) {
-        return run_typed(r, [&](const auto& domain) {
-          constexpr int D = std::decay_t<decltype(domain.lo)>::dim;
-          if (r.count && r.radius) throw InvalidArgument("regular: give --count or --radius, not both");
-          const auto cells = r.count ? strata_for_count(domain, *r.count) : strata_for_spacing(domain, *r.radius);
-          RegularParams params;
-          std::copy(cells.begin(), cells.end(), params.cells.begin());
-          double total = 1;
-          for (int c : cells) total *= c;
-          require_point_budget(total, D, r.max_points, "regular grid");
-          return regular(params, domain);
-        });
-      },
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              constexpr int D = std::decay_t<decltype(domain.lo)>::dim;
+              if (r.count && r.radius) throw InvalidArgument("regular: give --count or --radius, not both");
+              const auto cells = r.count ? strata_for_count(domain, *r.count) : strata_for_spacing(domain, *r.radius);
+              RegularParams params;
+              std::copy(cells.begin(), cells.end(), params.cells.begin());
+              double total = 1;
+              for (int c : cells) total *= c;
+              require_point_budget(total, D, r.max_points, "regular grid");
+              return regular(params, domain);
+            });
+          },
   };
   return method;
 }

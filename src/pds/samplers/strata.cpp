@@ -113,9 +113,9 @@ std::array<int, D> strata_for_spacing(const Domain<D>& domain, double spacing) {
   return cells;
 }
 
-#define PDS_INSTANTIATE(D)                                                                  \
-  template std::array<int, D> strata_for_count<D>(const Domain<D>&, std::uint64_t);        \
-  template std::array<int, D> strata_for_spacing<D>(const Domain<D>&, double);             \
+#define PDS_INSTANTIATE(D)                                                          \
+  template std::array<int, D> strata_for_count<D>(const Domain<D>&, std::uint64_t); \
+  template std::array<int, D> strata_for_spacing<D>(const Domain<D>&, double);      \
   template double strata_aspect<D>(const Domain<D>&, const std::array<int, D>&);
 PDS_INSTANTIATE(2)
 PDS_INSTANTIATE(3)
