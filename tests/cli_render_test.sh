@@ -3,24 +3,7 @@
 # reproducible bytes, JSON metrics, exit codes. Usage: cli_render_test.sh PATH_TO_PDS
 set -u
 pds=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
-
-expect_exit() {
-  local code=$1 fragment=$2
-  shift 3
-  "$pds" "$@" >"$tmp/out" 2>"$tmp/err" </dev/null
-  local rc=$?
-  if [[ $rc -ne $code ]]; then bad "pds $* exited $rc, expected $code; stderr: $(cat "$tmp/err")"; return; fi
-  if [[ $code -ne 0 ]]; then
-    if [[ $(wc -l <"$tmp/err") -ne 1 ]]; then bad "pds $*: stderr is not one line: $(cat "$tmp/err")"; return; fi
-    if ! grep -qF -- "$fragment" "$tmp/err"; then bad "pds $*: stderr lacks '$fragment': $(cat "$tmp/err")"; return; fi
-  fi
-  ok
-}
+source "$(dirname "$0")/cli_lib.sh"
 is_png() { [[ $(head -c 8 "$1" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]]; }
 
 # tile: a torus pattern; its analysis on the torus agrees with the summary.
@@ -65,5 +48,4 @@ expect_exit 2 "sampler jittered takes no method parameters" -- render --size 8x8
 expect_exit 2 "has no parameter 'k'" -- render --sampler tiled:jittered --size 8x8 -P k=3 -o "$tmp/x.png"
 expect_exit 1 "cannot write" -- render --size 8x8 -o "$tmp/no/such/dir.png"
 
-echo "cli_render: $passed passed, $failed failed"
-[[ $failed -eq 0 ]]
+finish cli_render

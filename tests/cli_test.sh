@@ -3,27 +3,7 @@
 # reproducible bytes, the analyze JSON. Usage: cli_test.sh PATH_TO_PDS
 set -u
 pds=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-
-ok() { passed=$((passed + 1)); }
-bad() { failed=$((failed + 1)); echo "FAIL: $*"; }
-
-# expect_exit CODE FRAGMENT -- ARGS...: exit status CODE, and for errors a
-# single stderr line containing FRAGMENT.
-expect_exit() {
-  local code=$1 fragment=$2
-  shift 3
-  "$pds" "$@" >"$tmp/out" 2>"$tmp/err" </dev/null
-  local rc=$?
-  if [[ $rc -ne $code ]]; then bad "pds $* exited $rc, expected $code; stderr: $(cat "$tmp/err")"; return; fi
-  if [[ $code -ne 0 ]]; then
-    if [[ $(wc -l <"$tmp/err") -ne 1 ]]; then bad "pds $*: stderr is not one line: $(cat "$tmp/err")"; return; fi
-    if ! grep -qF -- "$fragment" "$tmp/err"; then bad "pds $*: stderr lacks '$fragment': $(cat "$tmp/err")"; return; fi
-  fi
-  ok
-}
+source "$(dirname "$0")/cli_lib.sh"
 
 # Help lists every method and the radius convention.
 expect_exit 0 "" -- --help
@@ -101,5 +81,4 @@ expect_exit 0 "" -- generate latin-hypercube -n 1000 -d 3
 # Failures: exit 1, and nothing half-written.
 expect_exit 1 "cannot write" -- generate random --count 10 -o "$tmp/no/such/dir/p.csv"
 
-echo "cli: $passed passed, $failed failed"
-[[ $failed -eq 0 ]]
+finish cli
