@@ -69,6 +69,18 @@ TEST(DunbarHumphreys, DenserThanMaximalDartThrowing) {
   EXPECT_GT(testing_stats::welch_t(dh, dart), 20.0);
 }
 
+// What the sector variants guarantee on a set of some 2000 samples: the
+// minimum distance (all pairs), every sample inside, and no uncovered point
+// (sectors narrower than 1e-12 rad are dropped: gaps under 1e-11 r).
+void expect_maximal_poisson_disk(const PointSet<2>& points, const Domain<2>& domain, double r) {
+  ASSERT_GT(points.size(), 2000u);
+  EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
+  for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
+  const auto mx = check_maximality(points, domain, r, 1e-9 * r);
+  EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
+                          << mx.gap_distance;
+}
+
 // Variant 1, the paper's scalloped sectors over the annulus r..2r.
 DunbarHumphreysParams sectors(double r) {
   DunbarHumphreysParams params{r};
@@ -81,13 +93,7 @@ TEST(DunbarHumphreysSectors, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
   for (bool torus : {false, true}) {
     const auto domain = test_domain(torus);
     const auto points = dunbar_humphreys(sectors(r), domain, 5);
-    ASSERT_GT(points.size(), 2000u);
-    EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
-    for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
-    // Sectors narrower than 1e-12 rad are dropped: gaps under 1e-11 r.
-    const auto mx = check_maximality(points, domain, r, 1e-9 * r);
-    EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
-                            << mx.gap_distance;
+    expect_maximal_poisson_disk(points, domain, r);
   }
 }
 
@@ -151,12 +157,7 @@ TEST(DunbarHumphreysGlobalSectors, MinimumDistanceInsideAndMaximalOnBoxAndTorus)
   for (bool torus : {false, true}) {
     const auto domain = test_domain(torus);
     const auto points = dunbar_humphreys(global_sectors(r), domain, 5);
-    ASSERT_GT(points.size(), 2000u);
-    EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
-    for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
-    const auto mx = check_maximality(points, domain, r, 1e-9 * r);
-    EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
-                            << mx.gap_distance;
+    expect_maximal_poisson_disk(points, domain, r);
   }
 }
 
