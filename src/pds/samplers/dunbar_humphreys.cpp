@@ -182,6 +182,10 @@ class CellGrid {
     cells_.assign(static_cast<std::size_t>(n_[0]) * n_[1], -1);
   }
   int n(int axis) const { return n_[axis]; }
+  /// How many cells around a sample's cell can hold a sample within `distance`.
+  int reach(double distance) const {
+    return static_cast<int>(std::ceil(distance * std::max(inv_edge_[0], inv_edge_[1])));
+  }
   int coord(double x, int axis) const {
     const int c = static_cast<int>((x - domain_.lo[axis]) * inv_edge_[axis]);
     return std::clamp(c, 0, n_[axis] - 1);
@@ -224,6 +228,16 @@ class CellGrid {
   double inv_edge_[2];
   std::vector<std::int32_t> cells_;
 };
+
+/// Appends q to the samples and records it in its grid cell; returns its index.
+std::int32_t append_sample(PointSet<2>& points, CellGrid& grid, const Point<2>& q) {
+  if (points.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+    throw InvalidArgument("dunbar-humphreys: more than 2^31 - 1 samples");
+  const auto index = static_cast<std::int32_t>(points.size());
+  points.push_back(q);
+  grid.at(q) = index;
+  return index;
+}
 
 // ---------------------------------------------------------------------------
 // Variant 1: the paper's scalloped sectors (sampling the full annulus r..2r).
@@ -565,10 +579,8 @@ PointSet<2> global_scalloped_sampling(const DunbarHumphreysParams& params, const
                                       std::uint64_t seed) {
   const double r = params.radius, r2 = r * r;
   CellGrid grid(domain, r / std::sqrt(2.0));
-  const int reach =
-      static_cast<int>(std::ceil(3.0 * r * std::max(grid.n(0) / domain.extent(0), grid.n(1) / domain.extent(1))));
-  const int reach_2r =
-      static_cast<int>(std::ceil(2.0 * r * std::max(grid.n(0) / domain.extent(0), grid.n(1) / domain.extent(1))));
+  const int reach = grid.reach(3.0 * r);
+  const int reach_2r = grid.reach(2.0 * r);
   PointSet<2> points;
   points.reserve(static_cast<std::size_t>(0.72 * domain.volume() / r2) + 16);
   SumTree areas;
@@ -576,11 +588,7 @@ PointSet<2> global_scalloped_sampling(const DunbarHumphreysParams& params, const
   const double annulus = 3.0 * std::numbers::pi * r2;
   Rng rng(seed);
   auto add = [&](const Point<2>& q) {
-    if (points.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-      throw InvalidArgument("dunbar-humphreys: more than 2^31 - 1 samples");
-    const auto index = static_cast<std::int32_t>(points.size());
-    points.push_back(q);
-    grid.at(q) = index;
+    const std::int32_t index = append_sample(points, grid, q);
     areas.set(static_cast<std::size_t>(index), annulus);
     return index;
   };
@@ -626,8 +634,7 @@ PointSet<2> scalloped_sector_sampling(const DunbarHumphreysParams& params, const
   const double r = params.radius, r2 = r * r;
   CellGrid grid(domain, r / std::sqrt(2.0));
   // Cells that may hold a sample within 3r (the reach of a disk into the annulus).
-  const int reach =
-      static_cast<int>(std::ceil(3.0 * r * std::max(grid.n(0) / domain.extent(0), grid.n(1) / domain.extent(1))));
+  const int reach = grid.reach(3.0 * r);
   PointSet<2> points;
   // Variant 1 makes about 0.735 samples per r^2 (rho ~ 0.80); reserving a little more
   // avoids the doubling that would otherwise set the peak memory.
@@ -635,11 +642,7 @@ PointSet<2> scalloped_sector_sampling(const DunbarHumphreysParams& params, const
   std::vector<std::int32_t> front;
   Rng rng(seed);
   auto add = [&](const Point<2>& q) {
-    if (points.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-      throw InvalidArgument("dunbar-humphreys: more than 2^31 - 1 samples");
-    const auto index = static_cast<std::int32_t>(points.size());
-    points.push_back(q);
-    grid.at(q) = index;
+    const std::int32_t index = append_sample(points, grid, q);
     front.push_back(index);
     return index;
   };
@@ -712,8 +715,7 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
 
   CellGrid grid(domain, r / std::sqrt(2.0));
   // Cells that may hold a sample within 2 rc.
-  const int reach =
-      static_cast<int>(std::ceil(2.0 * rc * std::max(grid.n(0) / domain.extent(0), grid.n(1) / domain.extent(1))));
+  const int reach = grid.reach(2.0 * rc);
   PointSet<2> points;
   // Boundary sampling makes about 0.875 samples per r^2 (rho ~ 0.87); reserving
   // that avoids the doubling that would otherwise set the peak memory.
@@ -728,13 +730,9 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
   Rng rng(seed);
 
   auto add = [&](const Point<2>& q, std::int32_t from, double theta) {
-    if (points.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
-      throw InvalidArgument("dunbar-humphreys: more than 2^31 - 1 samples");
-    const auto index = static_cast<std::int32_t>(points.size());
-    points.push_back(q);
+    const std::int32_t index = append_sample(points, grid, q);
     parent.push_back(from);
     angle.push_back(theta);
-    grid.at(q) = index;
     return index;
   };
   add(uniform_point(rng, domain), -1, 0.0);
