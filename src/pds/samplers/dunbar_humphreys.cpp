@@ -77,6 +77,7 @@
 #include <string>
 #include <vector>
 
+#include "pds/detail/sum_tree.h"
 #include "pds/error.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
@@ -527,47 +528,6 @@ void build_region(const Domain<2>& domain, double r, CellGrid& grid, int reach, 
   }
 }
 
-/// Sums of non-negative weights over a complete binary tree; every inner node
-/// is recomputed from its children (no drift), so the root is exactly 0 once
-/// every weight is.
-class SumTree {
- public:
-  double total() const { return node_.empty() ? 0.0 : node_[1]; }
-  double weight(std::size_t i) const { return i < leaves_ ? node_[leaves_ + i] : 0.0; }
-  void set(std::size_t i, double w) {
-    if (i >= leaves_) grow(i + 1);
-    std::size_t at = leaves_ + i;
-    node_[at] = w;
-    for (at /= 2; at >= 1; at /= 2) node_[at] = node_[2 * at] + node_[2 * at + 1];
-  }
-  /// The leaf where the running sum passes u, u in [0, total()).
-  std::size_t find(double u) const {
-    std::size_t at = 1;
-    while (at < leaves_) {
-      if (u < node_[2 * at] || node_[2 * at + 1] <= 0.0) {
-        at = 2 * at;
-      } else {
-        u -= node_[2 * at];
-        at = 2 * at + 1;
-      }
-    }
-    return at - leaves_;
-  }
-
- private:
-  void grow(std::size_t n) {
-    std::size_t leaves = std::max<std::size_t>(leaves_, 1);
-    while (leaves < n) leaves *= 2;
-    std::vector<double> old(node_.begin() + static_cast<std::ptrdiff_t>(leaves_), node_.end());
-    leaves_ = leaves;
-    node_.assign(2 * leaves_, 0.0);
-    std::copy(old.begin(), old.end(), node_.begin() + static_cast<std::ptrdiff_t>(leaves_));
-    for (std::size_t at = leaves_ - 1; at >= 1; --at) node_[at] = node_[2 * at] + node_[2 * at + 1];
-  }
-  std::size_t leaves_ = 0;
-  std::vector<double> node_;
-};
-
 /// Variant 2: uniform over the union of all front regions, which makes the
 /// next sample uniform over the free area within 2r of the samples, as dart
 /// throwing's would be there. A front sample is picked in proportion to its
@@ -583,7 +543,7 @@ PointSet<2> global_scalloped_sampling(const DunbarHumphreysParams& params, const
   const int reach_2r = grid.reach(2.0 * r);
   PointSet<2> points;
   points.reserve(static_cast<std::size_t>(0.72 * domain.volume() / r2) + 16);
-  SumTree areas;
+  detail::SumTree areas;
   areas.set(points.capacity(), 0.0);  // size the tree once for the expected count
   const double annulus = 3.0 * std::numbers::pi * r2;
   Rng rng(seed);

@@ -41,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "pds/detail/sum_tree.h"
 #include "pds/error.h"
 #include "pds/grid.h"
 #include "pds/rng.h"
@@ -67,53 +68,6 @@ double area(const std::vector<V2>& poly) {
   for (std::size_t i = 0, n = poly.size(); i < n; ++i) s += cross(poly[i], poly[(i + 1) % n]);
   return 0.5 * s;
 }
-
-/// Binary tree of partial sums over the cells' weights: weighted choice and
-/// update in O(log N). Parents are recomputed from their children, so no
-/// rounding drift accumulates.
-class SumTree {
- public:
-  double total() const { return sums_.size() > 1 ? sums_[1] : 0.0; }
-  double weight(std::size_t i) const { return sums_[capacity_ + i]; }
-
-  void set(std::size_t i, double w) {
-    if (i >= capacity_) grow(i + 1);
-    std::size_t n = capacity_ + i;
-    sums_[n] = w;
-    for (n /= 2; n >= 1; n /= 2) sums_[n] = sums_[2 * n] + sums_[2 * n + 1];
-  }
-
-  /// The leaf whose prefix-sum range holds u, 0 <= u < total().
-  std::size_t find(double u) const {
-    std::size_t n = 1;
-    while (n < capacity_) {
-      if (u < sums_[2 * n]) {
-        n = 2 * n;
-      } else {
-        u -= sums_[2 * n];
-        n = 2 * n + 1;
-      }
-    }
-    return n - capacity_;
-  }
-
-  void reserve(std::size_t n) { grow(n); }
-
- private:
-  void grow(std::size_t n) {
-    std::size_t capacity = std::max<std::size_t>(capacity_, 1);
-    while (capacity < n) capacity *= 2;
-    if (capacity == capacity_) return;
-    std::vector<double> sums(2 * capacity, 0.0);
-    for (std::size_t i = 0; i < capacity_; ++i) sums[capacity + i] = sums_[capacity_ + i];
-    for (std::size_t k = capacity - 1; k >= 1; --k) sums[k] = sums[2 * k] + sums[2 * k + 1];
-    sums_ = std::move(sums);
-    capacity_ = capacity;
-  }
-
-  std::size_t capacity_ = 0;
-  std::vector<double> sums_;
-};
 
 class JonesSampler {
  public:
@@ -361,7 +315,7 @@ class JonesSampler {
   Delaunay dt_;
   std::vector<Vertex> handles_;  // copies_ per sample; the central copy in the middle
   PointSet<2> points_;
-  SumTree tree_;
+  detail::SumTree tree_;
   std::vector<std::uint16_t> misses_;
   std::vector<std::int32_t> changed_;
 };
