@@ -16,6 +16,7 @@
 #include "pds/analysis/relative_radius.h"
 #include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/dunbar_humphreys.h"
+#include "pds/samplers/ebeida.h"
 #include "pds/samplers/jones.h"
 #include "pds/samplers/wei.h"
 
@@ -103,6 +104,18 @@ void BM_Jones(benchmark::State& state) {
 // Up to 10^6: on the torus every sample is in the triangulation 9 times (about
 // 1.4 GB at 10^6), which puts 10^7 out of this machine's reach.
 BENCHMARK(BM_Jones)->RangeMultiplier(10)->Range(10'000, 1'000'000)->Unit(benchmark::kMillisecond);
+
+/// Maximal dart throwing on a flat quadtree, darts swept in time order.
+void BM_Ebeida(benchmark::State& state) {
+  run(state, 0.6965, [](double r) { return pds::ebeida<2>({r}, pds::Domain<2>::unit(true), 1); });
+}
+BENCHMARK(BM_Ebeida)->RangeMultiplier(10)->Range(10'000, 10'000'000)->Unit(benchmark::kMillisecond);
+
+void BM_Ebeida3D(benchmark::State& state) {
+  const double radius = std::cbrt(0.0 + 1.0 / static_cast<double>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(pds::ebeida<3>({radius * 0.85}, pds::Domain<3>::unit(true), 1).data());
+}
+BENCHMARK(BM_Ebeida3D)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
 // The baseline: dart throwing (issue 3) with its default failure bound, which
 // stops near rho 0.75 without maximality. Its failure bound grows with N, so

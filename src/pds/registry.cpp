@@ -10,6 +10,7 @@
 #include "pds/samplers/bridson.h"
 #include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/dunbar_humphreys.h"
+#include "pds/samplers/ebeida.h"
 #include "pds/samplers/halton.h"
 #include "pds/samplers/hammersley.h"
 #include "pds/samplers/jittered.h"
@@ -29,7 +30,7 @@ std::span<const Method> methods() {
       white_noise_method(),   regular_method(), jittered_method(),       halton_method(),
       hammersley_method(),    sobol_method(),   multi_jittered_method(), latin_hypercube_method(),
       dart_throwing_method(), bridson_method(), best_candidate_method(), dunbar_humphreys_method(),
-      wei_method(),           jones_method(),
+      wei_method(),           jones_method(),   ebeida_method(),
   };
   return table;
 }

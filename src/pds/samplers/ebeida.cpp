@@ -1,0 +1,486 @@
+// M. S. Ebeida, S. A. Mitchell, A. Patney, A. A. Davidson, J. D. Owens, "A
+// simple algorithm for maximal Poisson-disk sampling in high dimensions",
+// Computer Graphics Forum 31(2), 2012; and M. S. Ebeida, A. A. Davidson,
+// A. Patney, P. M. Knupp, S. A. Mitchell, J. D. Owens, "Efficient maximal
+// Poisson-disk sampling", ACM SIGGRAPH 2011.
+//
+// Method, as in the papers:
+// - A background grid of cells of edge s < r/sqrt(D): a sample covers its own
+//   cell, so a cell holds one sample at most, and a dart only needs the samples
+//   of the few cells within r of its own.
+// - Darts land uniformly on the cells still open; a dart at distance >= r from
+//   every sample becomes a sample. After a while the open area is a small part
+//   of the open cells, so every open cell is split into 2^D sub-cells and a
+//   sub-cell is dropped when one disk covers it (all its corners inside the
+//   disk): a flat quadtree, refined a level at a time, until nothing is open.
+//   Every dart is uniform over a superset of the uncovered area, so the kept
+//   samples are those of plain dart throwing run until no dart fits.
+//
+// What we add: the papers draw each dart from the whole list of open cells,
+// which makes every dart a cache miss on a large grid. Here each open cell has
+// its own stream of darts, a Poisson process in time of rate one per open
+// sub-cell (all sub-cells of a level have the same size), and a dart is kept
+// if no sample kept EARLIER IN TIME lies within r. The superposition of the
+// cells' streams is one Poisson process on the open area, so ordering the
+// darts by time is exactly the papers' sequence of uniform darts; but the
+// decision for a dart only needs the darts of nearby cells with earlier
+// times, so the grid can be swept in memory order: a dart first asks its
+// neighbours to settle their own darts up to its time (recursively, with
+// ever earlier times), then checks their samples. Time runs in windows of 1/2
+// (a neighbour chain in one window is short) and a level runs for a fixed time
+// before it is refined; neither choice changes the distribution.
+//
+// Determinism: dart j of cell c at level l comes from a hash of (seed, l, c,
+// j); the waiting times use a logarithm written with + - * / and frexp only,
+// so a seed gives the same samples on every platform.
+//
+// Guarantees: minimum distance r (checked with Domain::distance2, the same
+// function the analysis uses); maximal up to a slack of 1e-12 r plus rounding
+// (a sub-cell is dropped only when its corners are within r minus that slack
+// of one sample); the distribution is maximal dart throwing's.
+//
+// Complexity: O(1) expected work per cell and level, and the open cells shrink
+// geometrically from level to level: O(N) time and memory (measured in
+// docs/benchmarks.md). Memory: a 4-byte state per grid cell (about 2.9 cells
+// per sample in 2D) plus the open cells of the current level.
+#include "pds/samplers/ebeida.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "pds/detail/format.h"
+#include "pds/error.h"
+#include "pds/rng.h"
+
+namespace pds {
+namespace {
+
+// Deepest level: sub-cells of edge s / 2^30 (2D) or s / 2^20 (3D), codes of 60 bits. Deep levels are
+// reached only at Voronoi vertices whose distance to their samples is within ~1e-6 r below r.
+template <int D>
+constexpr int kMaxLevel = 60 / D;
+constexpr double kFirstLevelTime = 1.5;  // expected darts per cell at level 0 (tuned, docs/ebeida.md)
+constexpr double kLevelTime = 0.5;       // expected darts per sub-cell at every further level
+constexpr double kWindow = 0.5;          // darts are settled window by window in time
+constexpr int kMaxDepth = 10000;         // a chain of ever earlier darts (measured: under 30)
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// -ln(u) for u in (0, 1], with frexp and + - * / only, so that the waiting
+/// times are the same bits on every platform (libm's log need not be).
+double neg_log(double u) {
+  int e = 0;
+  double m = std::frexp(u, &e);  // u = m 2^e, m in [1/2, 1)
+  if (m < 0.70710678118654752440) {
+    m *= 2.0;
+    --e;
+  }
+  // ln m = 2 atanh(z) = 2 (z + z^3/3 + z^5/5 + ...), |z| <= 0.172: the terms
+  // after z^19/19 add less than 1e-16 relative.
+  static constexpr double kInverseOdd[] = {1.0 / 1,  1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,
+                                           1.0 / 11, 1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19};
+  const double z = (m - 1.0) / (m + 1.0), z2 = z * z;
+  double series = kInverseOdd[9];
+  for (int k = 8; k >= 0; --k) series = series * z2 + kInverseOdd[k];
+  return -(e * 0.69314718055994530942 + 2.0 * z * series);
+}
+
+/// Uniform in [0, 1) from 64 hashed bits.
+double unit(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
+
+template <int D>
+class EbeidaSampler {
+  // Grid cell states: >= 0 a sample index, kCovered (no sample and no dart can
+  // land), and <= kOpen an open cell whose slot is kOpen - state.
+  static constexpr std::int32_t kCovered = -1;
+  static constexpr std::int32_t kOpen = -2;
+  static constexpr int kChildren = 1 << D;
+
+  struct Open {
+    std::uint32_t cell;
+    std::uint32_t darts;      // darts of this cell drawn so far at this level
+    double next_time;         // time of its next dart; infinity once settled
+    std::uint32_t sub_begin;  // its open sub-cells: subs_[sub_begin, sub_begin + sub_count)
+    std::uint32_t sub_count;  // (at level 0: the whole cell, nothing stored)
+  };
+
+ public:
+  EbeidaSampler(const EbeidaParams& params, const Domain<D>& domain, std::uint64_t seed)
+      : domain_(domain), seed_(seed), r2_(params.radius * params.radius) {
+    const double r = params.radius;
+    double cells = 1.0, scale = 0.0;
+    for (int a = 0; a < D; ++a) {
+      // Slightly more cells than extent sqrt(D) / r: a cell's diagonal stays
+      // below r after rounding, so a sample covers its whole cell.
+      n_[a] = static_cast<int>(std::max(1.0, std::ceil(domain.extent(a) * std::sqrt(double(D)) * (1.0 + 1e-9) / r)));
+      cells *= n_[a];
+      scale = std::max({scale, std::abs(domain.lo[a]), std::abs(domain.hi[a])});
+    }
+    if (cells > static_cast<double>(1 << 30))
+      throw InvalidArgument("ebeida: radius " + detail::format_number(r) +
+                            " needs more than 2^30 grid cells for this domain");
+    // Rounding of coordinates of this size can move a corner or a dart by a
+    // few units of 2^-52 scale; a sub-cell is dropped only with that margin.
+    const double slack = 1e-12 * r + 16.0 * scale * 0x1.0p-52;
+    if (slack > 0.25 * r)
+      throw InvalidArgument("ebeida: radius " + detail::format_number(r) +
+                            " is too small for coordinates of magnitude " + detail::format_number(scale));
+    cover2_ = (r - slack) * (r - slack);
+    std::size_t stride = 1;
+    for (int a = 0; a < D; ++a) {
+      stride_[a] = stride;
+      stride *= static_cast<std::size_t>(n_[a]);
+      corners_[a].resize(static_cast<std::size_t>(n_[a]) + 1);
+      for (int i = 0; i < n_[a]; ++i) corners_[a][i] = domain.lo[a] + domain.extent(a) * i / n_[a];
+      corners_[a][n_[a]] = domain.hi[a];
+    }
+    // The cells that can hold a sample closer than r to a point of a cell: the
+    // gap between the two cells along each axis is (|offset| - 1) edges.
+    std::array<int, D> reach;
+    for (int a = 0; a < D; ++a) {
+      const double edge = domain.extent(a) / n_[a];
+      reach[a] = static_cast<int>(std::ceil(r / edge)) + 1;
+      // On a torus, an offset of a whole period or more only revisits cells.
+      if (domain.periodic) reach[a] = std::min(reach[a], n_[a] / 2 + 1);
+      wrap_[a].resize(static_cast<std::size_t>(n_[a] + 2 * reach[a]));
+      for (int i = -reach[a]; i < n_[a] + reach[a]; ++i) {
+        const int wrapped = domain.periodic ? ((i % n_[a]) + n_[a]) % n_[a] : (i >= 0 && i < n_[a] ? i : -1);
+        wrap_[a][static_cast<std::size_t>(i + reach[a])] = wrapped;
+      }
+      reach_[a] = reach[a];
+    }
+    std::vector<std::pair<double, std::array<int, D>>> offsets;
+    std::array<int, D> o;
+    for (int a = 0; a < D; ++a) o[a] = -reach[a];
+    while (true) {
+      double gap2 = 0.0;
+      bool self = true;
+      for (int a = 0; a < D; ++a) {
+        const double gap = std::max(0, std::abs(o[a]) - 1) * (domain.extent(a) / n_[a]);
+        gap2 += gap * gap;
+        self = self && o[a] == 0;
+      }
+      if (!self && gap2 < r2_ * (1.0 + 1e-6)) offsets.push_back({gap2, o});
+      int a = 0;
+      while (a < D && ++o[a] > reach[a]) {
+        o[a] = -reach[a];
+        ++a;
+      }
+      if (a == D) break;
+    }
+    // Nearest cells first: a rejected dart usually stops at the first few.
+    std::stable_sort(offsets.begin(), offsets.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& [gap2, off] : offsets) {
+      offsets_.push_back(off);
+      std::ptrdiff_t linear = 0;
+      for (int a = 0; a < D; ++a) linear += off[a] * static_cast<std::ptrdiff_t>(stride_[a]);
+      linear_offsets_.push_back(linear);
+    }
+    state_.assign(stride, kOpen);
+    open_.resize(stride);
+    const std::uint64_t key = key_ = level_key(0);
+    for (std::uint32_t c = 0; c < stride; ++c) {
+      open_[c] = Open{c, 0, 0.0, 0, 1};
+      state_[c] = kOpen - static_cast<std::int32_t>(c);
+      open_[c].next_time = waiting_time(key, c, 0, 1);
+    }
+  }
+
+  PointSet<D> run() {
+    double start = 0.0;
+    for (level_ = 0; !open_.empty(); ++level_) {
+      if (level_ > kMaxLevel<D>)
+        throw Failure("ebeida: " + std::to_string(open_.size()) + " cells still open after " +
+                      std::to_string(kMaxLevel<D>) + " levels of refinement (numerical breakdown)");
+      level_scale_ = std::ldexp(1.0, -level_);
+      if (level_ > 0) refine(start);
+      if (open_.empty()) break;
+      const double end = start + (level_ == 0 ? kFirstLevelTime : kLevelTime);
+      for (double until = start + kWindow;; until += kWindow) {
+        until = std::min(until, end);
+        for (std::uint32_t slot = 0; slot < open_.size(); ++slot)
+          if (open_[slot].next_time < until) settle(slot, until, 0);
+        compact();
+        if (until >= end) break;
+      }
+      start = end;
+    }
+    return std::move(samples_);
+  }
+
+ private:
+  std::uint64_t level_key(int level) const { return mix64(mix64(seed_ ^ 0x6562656964614c76ULL) + mix64(level)); }
+
+  /// The random bits of dart `dart` of `cell`: part 0 its waiting time, parts
+  /// 1..D its position, part D + 1 its sub-cell.
+  static std::uint64_t dart_base(std::uint64_t key, std::uint32_t cell, std::uint32_t dart) {
+    return mix64(key ^ ((std::uint64_t{cell} << 32) | dart));
+  }
+  static std::uint64_t dart_bits(std::uint64_t base, int part) {
+    return mix64(base + 0x9e3779b97f4a7c15ULL * static_cast<std::uint64_t>(part + 1));
+  }
+
+  /// Waiting time before dart `dart` of a cell with `subs` open sub-cells.
+  static double waiting_time(std::uint64_t key, std::uint32_t cell, std::uint32_t dart, std::uint32_t subs) {
+    const double u = static_cast<double>((dart_bits(dart_base(key, cell, dart), 0) >> 11) + 1) * 0x1.0p-53;  // (0, 1]
+    return neg_log(u) / subs;
+  }
+
+  std::array<int, D> coords(std::uint32_t cell) const {
+    std::array<int, D> c;
+    std::size_t rest = cell;
+    for (int a = 0; a < D; ++a) {
+      c[a] = static_cast<int>(rest % static_cast<std::size_t>(n_[a]));
+      rest /= static_cast<std::size_t>(n_[a]);
+    }
+    return c;
+  }
+
+  /// Calls f(neighbour cell index) for every cell that may hold a sample
+  /// closer than r to a point of `cell`, nearest first; stops when f is true.
+  template <class F>
+  bool any_neighbour(const std::array<int, D>& c, std::uint32_t cell, F&& f) const {
+    bool interior = true;
+    for (int a = 0; a < D; ++a) interior = interior && c[a] >= reach_[a] && c[a] + reach_[a] < n_[a];
+    if (interior) {
+      for (const std::ptrdiff_t off : linear_offsets_)
+        if (f(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + off))) return true;
+      return false;
+    }
+    for (const auto& off : offsets_) {
+      std::size_t index = 0;
+      bool inside = true;
+      for (int a = 0; a < D && inside; ++a) {
+        const int w = wrap_[a][static_cast<std::size_t>(c[a] + off[a] + reach_[a])];
+        inside = w >= 0;
+        index += static_cast<std::size_t>(w) * stride_[a];
+      }
+      if (inside && f(index)) return true;
+    }
+    return false;
+  }
+
+  /// The lower corner and edge of sub-cell `code` of `cell` at the current level.
+  void sub_box(const std::array<int, D>& c, std::uint64_t code, Point<D>& lo, std::array<double, D>& edge) const {
+    const std::uint64_t mask = (std::uint64_t{1} << level_) - 1;
+    for (int a = 0; a < D; ++a) {
+      const double cell_lo = corners_[a][static_cast<std::size_t>(c[a])];
+      edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo) * level_scale_;  // exact: a power of 2
+      lo[a] = cell_lo + static_cast<double>((code >> (a * level_)) & mask) * edge[a];
+    }
+  }
+
+  /// Settles the darts of open slot `slot` with times before `until`: each is
+  /// kept if no sample kept earlier in time lies closer than r.
+  void settle(std::uint32_t slot, double until, int depth) {
+    if (depth > kMaxDepth) throw Failure("ebeida: dart dependency chain deeper than " + std::to_string(kMaxDepth));
+    Open& open = open_[slot];
+    if (!(open.next_time < until)) return;
+    const std::uint64_t key = key_;
+    const std::array<int, D> c = coords(open.cell);
+    while (open.next_time < until) {
+      const double time = open.next_time;
+      const std::uint32_t dart = open.darts++;
+      // Advance first: a neighbour settling up to an earlier time must not
+      // see this dart again.
+      open.next_time += waiting_time(key, open.cell, dart + 1, open.sub_count);
+      Point<D> lo;
+      std::array<double, D> edge;
+      std::uint64_t code = 0;
+      const std::uint64_t base = dart_base(key, open.cell, dart);
+      if (level_ > 0) {
+        const u128 pick = static_cast<u128>(dart_bits(base, D + 1)) * open.sub_count;
+        code = subs_[open.sub_begin + static_cast<std::uint32_t>(pick >> 64)];
+      }
+      sub_box(c, code, lo, edge);
+      Point<D> x;
+      for (int a = 0; a < D; ++a) {
+        x[a] = lo[a] + unit(dart_bits(base, a + 1)) * edge[a];
+        const double upper = corners_[a][static_cast<std::size_t>(c[a]) + 1];
+        if (!(x[a] < upper)) x[a] = std::nextafter(upper, lo[a]);
+      }
+      // Each neighbour first settles its own darts up to this dart's time
+      // (work it would do later anyway), then its sample, if any, is checked.
+      // A sample seen here was kept earlier than this dart: a cell keeps a
+      // dart only after settling all its neighbours up to that dart's time.
+      std::int32_t blocker = -1;
+      const bool blocked = any_neighbour(c, open.cell, [&](std::size_t n) {
+        std::int32_t s = state_[n];
+        if (s <= kOpen) {
+          const auto slot = static_cast<std::uint32_t>(kOpen - s);
+          if (!(open_[slot].next_time < time)) return false;
+          settle(slot, time, depth + 1);
+          s = state_[n];
+        }
+        if (s >= 0 && domain_.distance2(x, samples_[static_cast<std::size_t>(s)]) < r2_) {
+          blocker = s;
+          return true;
+        }
+        return false;
+      });
+      if (!blocked) {
+        state_[open.cell] = static_cast<std::int32_t>(samples_.size());
+        samples_.push_back(x);
+        open.next_time = kInf;
+        return;
+      }
+      // A blocker that covers the whole cell blocks every later dart too.
+      if (level_ == 0 && covers_cell(samples_[static_cast<std::size_t>(blocker)], c)) {
+        state_[open.cell] = kCovered;
+        open.next_time = kInf;
+        return;
+      }
+    }
+  }
+
+  /// Whether every corner of the box is closer to s than r minus the slack:
+  /// the farthest corner takes, along each axis, the farther of the two faces
+  /// (the same sum, term for term, as distance2 to that corner).
+  bool covers_box(const Point<D>& s, const Point<D>& lo, const std::array<double, D>& edge) const {
+    double far2 = 0.0;
+    for (int a = 0; a < D; ++a) {
+      const double near_face = domain_.delta(lo[a], s[a], a), far_face = domain_.delta(lo[a] + edge[a], s[a], a);
+      far2 += std::max(near_face * near_face, far_face * far_face);
+    }
+    return far2 < cover2_;
+  }
+
+  bool covers_cell(const Point<D>& s, const std::array<int, D>& c) const {
+    Point<D> lo;
+    std::array<double, D> edge;
+    for (int a = 0; a < D; ++a) {
+      lo[a] = corners_[a][static_cast<std::size_t>(c[a])];
+      edge[a] = corners_[a][static_cast<std::size_t>(c[a]) + 1] - lo[a];
+    }
+    return covers_box(s, lo, edge);
+  }
+
+  /// Drops the settled slots; the open ones keep their order.
+  void compact() {
+    std::uint32_t kept = 0;
+    for (std::uint32_t slot = 0; slot < open_.size(); ++slot) {
+      const Open& open = open_[slot];
+      if (state_[open.cell] > kOpen) continue;
+      open_[kept] = open;
+      state_[open.cell] = kOpen - static_cast<std::int32_t>(kept);
+      ++kept;
+    }
+    open_.resize(kept);
+    if (open_.capacity() > 4 * open_.size() + 1024) open_.shrink_to_fit();
+  }
+
+  /// Splits the open sub-cells of every open cell into 2^D children for the
+  /// level now starting, keeping the children that no single disk covers.
+  void refine(double start) {
+    std::vector<std::uint64_t> subs;
+    std::vector<Open> open;
+    std::vector<std::array<double, D>> near;  // nearby samples, relative to the cell's lower corner
+    const std::uint64_t key = key_ = level_key(level_);
+    const int parent_level = level_ - 1;
+    const std::uint64_t parent_mask = (std::uint64_t{1} << parent_level) - 1;
+    for (const Open& o : open_) {
+      const std::array<int, D> c = coords(o.cell);
+      std::array<double, D> cell_lo, edge;
+      for (int a = 0; a < D; ++a) {
+        cell_lo[a] = corners_[a][static_cast<std::size_t>(c[a])];
+        edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * level_scale_;
+      }
+      near.clear();
+      any_neighbour(c, o.cell, [&](std::size_t n) {
+        if (state_[n] >= 0) {
+          const Point<D>& s = samples_[static_cast<std::size_t>(state_[n])];
+          std::array<double, D> d;
+          for (int a = 0; a < D; ++a) d[a] = domain_.delta(cell_lo[a], s[a], a);
+          near.push_back(d);
+        }
+        return false;
+      });
+      const auto begin = static_cast<std::uint32_t>(subs.size());
+      const std::uint32_t parents = parent_level == 0 ? 1 : o.sub_count;
+      for (std::uint32_t k = 0; k < parents; ++k) {
+        const std::uint64_t parent = parent_level == 0 ? 0 : subs_[o.sub_begin + k];
+        for (int child = 0; child < kChildren; ++child) {
+          std::uint64_t code = 0;
+          std::array<double, D> lo;
+          for (int a = 0; a < D; ++a) {
+            const std::uint64_t i = ((parent >> (a * parent_level)) & parent_mask) * 2 + ((child >> a) & 1);
+            code |= i << (a * level_);
+            lo[a] = static_cast<double>(i) * edge[a];
+          }
+          // Covered when the farthest corner is inside one disk (the slack
+          // in cover2_ absorbs the rounding of these relative coordinates).
+          bool covered = false;
+          for (const auto& d : near) {
+            double far2 = 0.0;
+            for (int a = 0; a < D; ++a) {
+              const double near_face = d[a] - lo[a], far_face = d[a] - (lo[a] + edge[a]);
+              far2 += std::max(near_face * near_face, far_face * far_face);
+            }
+            if ((covered = far2 < cover2_)) break;
+          }
+          if (!covered) subs.push_back(code);
+        }
+      }
+      const auto count = static_cast<std::uint32_t>(subs.size()) - begin;
+      if (count == 0) {
+        state_[o.cell] = kCovered;
+        continue;
+      }
+      state_[o.cell] = kOpen - static_cast<std::int32_t>(open.size());
+      open.push_back(Open{o.cell, 0, start + waiting_time(key, o.cell, 0, count), begin, count});
+    }
+    open_ = std::move(open);
+    subs_ = std::move(subs);
+  }
+
+  const Domain<D>& domain_;
+  std::uint64_t seed_;
+  double r2_, cover2_ = 0.0;
+  int level_ = 0;
+  std::uint64_t key_ = 0;     // level_key(level_)
+  double level_scale_ = 1.0;  // 2^-level_
+  std::array<int, D> n_{}, reach_{};
+  std::array<std::size_t, D> stride_{};
+  std::array<std::vector<double>, D> corners_;  // cell boundaries per axis, n + 1 each
+  std::array<std::vector<int>, D> wrap_;        // neighbour coordinate -> cell coordinate (-1: outside a box)
+  std::vector<std::array<int, D>> offsets_;     // neighbour offsets, nearest first
+  std::vector<std::ptrdiff_t> linear_offsets_;  // the same as index offsets, for cells away from the border
+  std::vector<std::int32_t> state_;
+  std::vector<Open> open_;
+  std::vector<std::uint64_t> subs_;
+  PointSet<D> samples_;
+};
+
+}  // namespace
+
+template <int D>
+PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uint64_t seed) {
+  domain.validate();
+  require_radius_budget(domain, params.radius, params.max_points);
+  return EbeidaSampler<D>(params, domain, seed).run();
+}
+
+template PointSet<2> ebeida<2>(const EbeidaParams&, const Domain<2>&, std::uint64_t);
+template PointSet<3> ebeida<3>(const EbeidaParams&, const Domain<3>&, std::uint64_t);
+
+const Method& ebeida_method() {
+  static const Method method{
+      .name = "ebeida",
+      .summary = "maximal Poisson disk, fast (Ebeida et al. flat quadtree, darts swept in time order), --radius",
+      .citation =
+          "M. S. Ebeida, S. A. Mitchell, A. Patney, A. A. Davidson, J. D. Owens, A simple algorithm for maximal "
+          "Poisson-disk sampling in high dimensions, Computer Graphics Forum 31(2), 2012",
+      .takes_radius = true,
+      .maximal = true,
+      .run =
+          [](const GenerateRequest& r) {
+            const EbeidaParams params{*r.radius, r.max_points};
+            return run_typed(r, [&](const auto& domain) { return ebeida(params, domain, r.seed); });
+          },
+  };
+  return method;
+}
+
+}  // namespace pds

@@ -1,0 +1,113 @@
+#include "pds/samplers/ebeida.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "nn_statistics.h"
+#include "pds/analysis/distance.h"
+#include "pds/analysis/maximality.h"
+#include "pds/analysis/relative_radius.h"
+#include "pds/error.h"
+#include "pds/samplers/jones.h"
+
+namespace pds {
+namespace {
+
+template <int D>
+Domain<D> test_domain(bool torus) {
+  if constexpr (D == 2) {
+    return Domain<2>{{{0.0, -1.0}}, {{1.25, 0.0}}, torus};
+  } else {
+    return Domain<3>{{{-0.5, 0.0, 2.0}}, {{0.5, 1.5, 2.8}}, torus};
+  }
+}
+
+template <int D>
+void check_set(double r) {
+  for (bool torus : {false, true}) {
+    const auto domain = test_domain<D>(torus);
+    const auto points = ebeida<D>({r}, domain, 5);
+    ASSERT_GT(points.size(), 1000u);
+    EXPECT_GE(min_distance_brute_force(points, domain).distance, r) << domain;
+    for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
+    const auto maximality = check_maximality(points, domain, r);
+    EXPECT_TRUE(maximality.maximal) << domain << ": gap at distance " << maximality.gap_distance;
+    // Maximal dart throwing packs to rho ~0.77 in 2D and ~0.80 in 3D; a box
+    // packs denser (samples at a face have fewer neighbours).
+    const double rho = relative_radius(r, domain.volume(), points.size(), D);
+    EXPECT_GT(rho, D == 2 ? 0.74 : 0.78) << domain;
+    EXPECT_LT(rho, D == 2 ? 0.80 : 0.87) << domain;
+    if (torus) {
+      // The saturation coverage of random sequential adsorption, disks of
+      // diameter r: 0.547069 in 2D (Hinrichsen, Feder, Jossang 1986) and
+      // 0.384131 in 3D (Torquato, Uche, Stillinger 2006); the count spread at
+      // these sizes is under 1%.
+      const double ball = D == 2 ? M_PI / 4.0 * r * r : M_PI / 6.0 * r * r * r;
+      const double coverage = static_cast<double>(points.size()) * ball / domain.volume();
+      EXPECT_NEAR(coverage, D == 2 ? 0.547069 : 0.384131, 0.03 * coverage) << domain;
+    }
+    EXPECT_EQ(points, ebeida<D>({r}, domain, 5));
+    EXPECT_NE(points, ebeida<D>({r}, domain, 6));
+  }
+}
+
+TEST(Ebeida, MinimumDistanceMaximalInsideAndReproducible2D) { check_set<2>(0.02); }
+TEST(Ebeida, MinimumDistanceMaximalInsideAndReproducible3D) { check_set<3>(0.07); }
+
+// Tiny domains: a torus of a few cells (neighbour offsets wrap onto the same
+// cells) and a radius larger than the domain (one sample covers it).
+TEST(Ebeida, SmallDomains) {
+  for (bool torus : {false, true}) {
+    const auto domain = Domain<2>::unit(torus);
+    const auto points = ebeida<2>({0.3}, domain, 3);
+    EXPECT_GE(min_distance_brute_force(points, domain).distance, 0.3);
+    EXPECT_TRUE(check_maximality(points, domain, 0.3).maximal);
+    const auto one = ebeida<2>({2.0}, domain, 3);
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_TRUE(domain.contains(one[0]));
+  }
+}
+
+// Unbiased: the process is maximal dart throwing exactly, so it must match
+// Jones's sampler (each sample uniform over the free area, run to
+// saturation) within statistical error: count, nearest-neighbour distances
+// and the whole radially averaged power spectrum (annuli 1-47, Welch t each).
+TEST(Ebeida, MatchesMaximalDartThrowing) {
+  const double r = 0.02;
+  const auto domain = Domain<2>::unit(true);
+  std::vector<double> en, em, ef, jn, jm, jf;
+  std::vector<std::vector<double>> ebeida_spectra, jones_spectra;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto e = ebeida<2>({r}, domain, seed);
+    const auto j = jones({r}, domain, 100 + seed);
+    const auto es = testing_stats::summarize(e, domain, r), js = testing_stats::summarize(j, domain, r);
+    en.push_back(double(e.size()));
+    jn.push_back(double(j.size()));
+    em.push_back(es.mean_over_r);
+    jm.push_back(js.mean_over_r);
+    ef.push_back(es.fraction_near);
+    jf.push_back(js.fraction_near);
+    ebeida_spectra.push_back(testing_stats::radial_power(e, domain, 48));
+    jones_spectra.push_back(testing_stats::radial_power(j, domain, 48));
+  }
+  EXPECT_LT(std::abs(testing_stats::welch_t(en, jn)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(em, jm)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(ef, jf)), testing_stats::kMaxT);
+  EXPECT_LT(testing_stats::max_spectrum_t(ebeida_spectra, jones_spectra, 47), testing_stats::kMaxSpectrumT);
+}
+
+TEST(Ebeida, RejectsBadInput) {
+  const auto domain = Domain<2>::unit();
+  EXPECT_THROW(ebeida<2>({0.0}, domain, 1), InvalidArgument);
+  EXPECT_THROW(ebeida<2>({-0.1}, domain, 1), InvalidArgument);
+  EXPECT_THROW(ebeida<2>({std::numeric_limits<double>::quiet_NaN()}, domain, 1), InvalidArgument);
+  EXPECT_THROW(ebeida<2>({1e-6}, domain, 1), InvalidArgument);  // over the default point budget
+  // Coordinates so large that rounding is a sizeable part of the radius.
+  const auto far = Domain<2>::box({{1e12, 1e12}}, {{1e12 + 1.0, 1e12 + 1.0}});
+  EXPECT_THROW(ebeida<2>({1e-3}, far, 1), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace pds
