@@ -98,6 +98,13 @@ class EbeidaSampler {
   static constexpr std::int32_t kOpen = -2;
   static constexpr int kChildren = 1 << D;
 
+  /// Neighbour cells as offsets, nearest first, and the same as index offsets
+  /// for cells away from the border.
+  struct Neighbours {
+    std::vector<std::array<int, D>> offsets;
+    std::vector<std::ptrdiff_t> linear;
+  };
+
   struct Open {
     std::uint32_t cell;
     std::uint32_t darts;      // darts of this cell drawn so far at this level
@@ -172,12 +179,7 @@ class EbeidaSampler {
     }
     // Nearest cells first: a rejected dart usually stops at the first few.
     std::stable_sort(offsets.begin(), offsets.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (const auto& [gap2, off] : offsets) {
-      offsets_.push_back(off);
-      std::ptrdiff_t linear = 0;
-      for (int a = 0; a < D; ++a) linear += off[a] * static_cast<std::ptrdiff_t>(stride_[a]);
-      linear_offsets_.push_back(linear);
-    }
+    for (const auto& [gap2, off] : offsets) add(near_, off);
     state_.assign(stride, kOpen);
     open_.resize(stride);
     const std::uint64_t key = key_ = level_key(0);
@@ -241,15 +243,15 @@ class EbeidaSampler {
   /// Calls f(neighbour cell index) for every cell that may hold a sample
   /// closer than r to a point of `cell`, nearest first; stops when f is true.
   template <class F>
-  bool any_neighbour(const std::array<int, D>& c, std::uint32_t cell, F&& f) const {
+  bool any_neighbour(const Neighbours& neighbours, const std::array<int, D>& c, std::uint32_t cell, F&& f) const {
     bool interior = true;
     for (int a = 0; a < D; ++a) interior = interior && c[a] >= reach_[a] && c[a] + reach_[a] < n_[a];
     if (interior) {
-      for (const std::ptrdiff_t off : linear_offsets_)
+      for (const std::ptrdiff_t off : neighbours.linear)
         if (f(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + off))) return true;
       return false;
     }
-    for (const auto& off : offsets_) {
+    for (const auto& off : neighbours.offsets) {
       std::size_t index = 0;
       bool inside = true;
       for (int a = 0; a < D && inside; ++a) {
@@ -260,6 +262,13 @@ class EbeidaSampler {
       if (inside && f(index)) return true;
     }
     return false;
+  }
+
+  void add(Neighbours& neighbours, const std::array<int, D>& off) const {
+    neighbours.offsets.push_back(off);
+    std::ptrdiff_t linear = 0;
+    for (int a = 0; a < D; ++a) linear += off[a] * static_cast<std::ptrdiff_t>(stride_[a]);
+    neighbours.linear.push_back(linear);
   }
 
   /// The lower corner and edge of sub-cell `code` of `cell` at the current level.
@@ -306,7 +315,7 @@ class EbeidaSampler {
       // A sample seen here was kept earlier than this dart: a cell keeps a
       // dart only after settling all its neighbours up to that dart's time.
       std::int32_t blocker = -1;
-      const bool blocked = any_neighbour(c, open.cell, [&](std::size_t n) {
+      const bool blocked = any_neighbour(near_, c, open.cell, [&](std::size_t n) {
         std::int32_t s = state_[n];
         if (s <= kOpen) {
           const auto slot = static_cast<std::uint32_t>(kOpen - s);
@@ -380,6 +389,19 @@ class EbeidaSampler {
     const std::uint64_t key = key_ = level_key(level_);
     const int parent_level = level_ - 1;
     const std::uint64_t parent_mask = (std::uint64_t{1} << parent_level) - 1;
+    // Only samples that can cover a whole child: along each axis the child's
+    // far side lies at least a child edge (half of one in the same column)
+    // beyond the gap between the cells. At level 1 that leaves the 3^D block.
+    Neighbours cover;
+    for (const auto& off : near_.offsets) {
+      double least2 = 0.0;
+      for (int a = 0; a < D; ++a) {
+        const double edge = domain_.extent(a) / n_[a], child = edge * level_scale_;
+        const double least = off[a] == 0 ? 0.5 * child : (std::abs(off[a]) - 1) * edge + child;
+        least2 += least * least;
+      }
+      if (least2 < r2_) add(cover, off);
+    }
     for (const Open& o : open_) {
       const std::array<int, D> c = coords(o.cell);
       std::array<double, D> cell_lo, edge;
@@ -388,11 +410,14 @@ class EbeidaSampler {
         edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * level_scale_;
       }
       near.clear();
-      any_neighbour(c, o.cell, [&](std::size_t n) {
+      // Away from a torus seam the plain difference is the wrapped one.
+      bool seam = false;
+      for (int a = 0; a < D; ++a) seam = seam || c[a] < reach_[a] || c[a] + reach_[a] >= n_[a];
+      any_neighbour(cover, c, o.cell, [&](std::size_t n) {
         if (state_[n] >= 0) {
           const Point<D>& s = samples_[static_cast<std::size_t>(state_[n])];
           std::array<double, D> d;
-          for (int a = 0; a < D; ++a) d[a] = domain_.delta(cell_lo[a], s[a], a);
+          for (int a = 0; a < D; ++a) d[a] = seam ? domain_.delta(cell_lo[a], s[a], a) : s[a] - cell_lo[a];
           near.push_back(d);
         }
         return false;
@@ -401,26 +426,39 @@ class EbeidaSampler {
       const std::uint32_t parents = parent_level == 0 ? 1 : o.sub_count;
       for (std::uint32_t k = 0; k < parents; ++k) {
         const std::uint64_t parent = parent_level == 0 ? 0 : subs_[o.sub_begin + k];
+        // The children's faces along each axis, relative to the cell's corner.
+        std::array<std::array<double, 3>, D> face;
+        for (int a = 0; a < D; ++a) {
+          const std::uint64_t first = ((parent >> (a * parent_level)) & parent_mask) * 2;
+          for (int f = 0; f < 3; ++f) face[a][f] = static_cast<double>(first + f) * edge[a];
+        }
+        // A child is covered when its farthest corner is inside one disk: the
+        // sum over axes of the larger squared distance to its two faces (the
+        // slack in cover2_ absorbs the rounding of these relative coordinates).
+        unsigned covered = 0;
+        for (const auto& d : near) {
+          std::array<std::array<double, 2>, D> far;
+          for (int a = 0; a < D; ++a) {
+            const double q0 = (d[a] - face[a][0]) * (d[a] - face[a][0]);
+            const double q1 = (d[a] - face[a][1]) * (d[a] - face[a][1]);
+            const double q2 = (d[a] - face[a][2]) * (d[a] - face[a][2]);
+            far[a] = {std::max(q0, q1), std::max(q1, q2)};
+          }
+          for (int child = 0; child < kChildren; ++child) {
+            double far2 = 0.0;
+            for (int a = 0; a < D; ++a) far2 += far[a][(child >> a) & 1];
+            if (far2 < cover2_) covered |= 1u << child;
+          }
+          if (covered == (1u << kChildren) - 1) break;
+        }
         for (int child = 0; child < kChildren; ++child) {
+          if (covered >> child & 1) continue;
           std::uint64_t code = 0;
-          std::array<double, D> lo;
           for (int a = 0; a < D; ++a) {
             const std::uint64_t i = ((parent >> (a * parent_level)) & parent_mask) * 2 + ((child >> a) & 1);
             code |= i << (a * level_);
-            lo[a] = static_cast<double>(i) * edge[a];
           }
-          // Covered when the farthest corner is inside one disk (the slack
-          // in cover2_ absorbs the rounding of these relative coordinates).
-          bool covered = false;
-          for (const auto& d : near) {
-            double far2 = 0.0;
-            for (int a = 0; a < D; ++a) {
-              const double near_face = d[a] - lo[a], far_face = d[a] - (lo[a] + edge[a]);
-              far2 += std::max(near_face * near_face, far_face * far_face);
-            }
-            if ((covered = far2 < cover2_)) break;
-          }
-          if (!covered) subs.push_back(code);
+          subs.push_back(code);
         }
       }
       const auto count = static_cast<std::uint32_t>(subs.size()) - begin;
@@ -445,8 +483,7 @@ class EbeidaSampler {
   std::array<std::size_t, D> stride_{};
   std::array<std::vector<double>, D> corners_;  // cell boundaries per axis, n + 1 each
   std::array<std::vector<int>, D> wrap_;        // neighbour coordinate -> cell coordinate (-1: outside a box)
-  std::vector<std::array<int, D>> offsets_;     // neighbour offsets, nearest first
-  std::vector<std::ptrdiff_t> linear_offsets_;  // the same as index offsets, for cells away from the border
+  Neighbours near_;  // the cells that may hold a sample closer than r to a point of a cell
   std::vector<std::int32_t> state_;
   std::vector<Open> open_;
   std::vector<std::uint64_t> subs_;
