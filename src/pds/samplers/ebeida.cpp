@@ -208,6 +208,7 @@ class EbeidaSampler {
         if (until >= end) break;
       }
       start = end;
+      if (samples_.size() > sorted_ + sorted_ / 64) sort_samples();
     }
     return std::move(samples_);
   }
@@ -366,6 +367,21 @@ class EbeidaSampler {
     return covers_box(s, lo, edge);
   }
 
+  /// Renumbers the samples in cell order: the samples near a cell are then
+  /// near each other in memory (the sweeps append them in several passes).
+  void sort_samples() {
+    PointSet<D> sorted;
+    sorted.reserve(samples_.size());
+    for (std::int32_t& state : state_)
+      if (state >= 0) {
+        const auto index = static_cast<std::int32_t>(sorted.size());
+        sorted.push_back(samples_[static_cast<std::size_t>(state)]);
+        state = index;
+      }
+    samples_ = std::move(sorted);
+    sorted_ = samples_.size();
+  }
+
   /// Drops the settled slots; the open ones keep their order.
   void compact() {
     std::uint32_t kept = 0;
@@ -488,6 +504,7 @@ class EbeidaSampler {
   std::vector<Open> open_;
   std::vector<std::uint64_t> subs_;
   PointSet<D> samples_;
+  std::size_t sorted_ = 0;  // samples_ is in cell order up to here
 };
 
 }  // namespace
