@@ -58,10 +58,14 @@
 namespace pds {
 namespace {
 
-// Deepest level: sub-cells of edge s / 2^30 (2D) or s / 2^20 (3D), codes of 60 bits. Deep levels are
-// reached only at Voronoi vertices whose distance to their samples is within ~1e-6 r below r.
+// A sub-cell's position in its cell: D coordinates of `level` bits each.
+using Code = u128;
+// Deepest level: 63 in 2D, 41 in 3D (codes of up to 126 bits), sub-cells of edge below 1e-12 r,
+// the slack of the coverage test. A Voronoi vertex of the samples at distance r - delta from
+// them needs sub-cells of diagonal below delta to close: about log2(r / delta) levels (15 are
+// common at 10^5 samples).
 template <int D>
-constexpr int kMaxLevel = 60 / D;
+constexpr int kMaxLevel = 128 / D - 1;
 constexpr double kFirstLevelTime = 1.5;  // expected darts per cell at level 0 (tuned, docs/ebeida.md)
 constexpr double kLevelTime = 0.5;       // expected darts per sub-cell at every further level
 constexpr double kWindow = 0.5;          // darts are settled window by window in time
@@ -273,12 +277,12 @@ class EbeidaSampler {
   }
 
   /// The lower corner and edge of sub-cell `code` of `cell` at the current level.
-  void sub_box(const std::array<int, D>& c, std::uint64_t code, Point<D>& lo, std::array<double, D>& edge) const {
-    const std::uint64_t mask = (std::uint64_t{1} << level_) - 1;
+  void sub_box(const std::array<int, D>& c, Code code, Point<D>& lo, std::array<double, D>& edge) const {
+    const Code mask = (Code{1} << level_) - 1;
     for (int a = 0; a < D; ++a) {
       const double cell_lo = corners_[a][static_cast<std::size_t>(c[a])];
       edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo) * level_scale_;  // exact: a power of 2
-      lo[a] = cell_lo + static_cast<double>((code >> (a * level_)) & mask) * edge[a];
+      lo[a] = cell_lo + static_cast<double>(static_cast<std::uint64_t>((code >> (a * level_)) & mask)) * edge[a];
     }
   }
 
@@ -298,7 +302,7 @@ class EbeidaSampler {
       open.next_time += waiting_time(key, open.cell, dart + 1, open.sub_count);
       Point<D> lo;
       std::array<double, D> edge;
-      std::uint64_t code = 0;
+      Code code = 0;
       const std::uint64_t base = dart_base(key, open.cell, dart);
       if (level_ > 0) {
         const u128 pick = static_cast<u128>(dart_bits(base, D + 1)) * open.sub_count;
@@ -399,12 +403,12 @@ class EbeidaSampler {
   /// Splits the open sub-cells of every open cell into 2^D children for the
   /// level now starting, keeping the children that no single disk covers.
   void refine(double start) {
-    std::vector<std::uint64_t> subs;
+    std::vector<Code> subs;
     std::vector<Open> open;
     std::vector<std::array<double, D>> near;  // nearby samples, relative to the cell's lower corner
     const std::uint64_t key = key_ = level_key(level_);
     const int parent_level = level_ - 1;
-    const std::uint64_t parent_mask = (std::uint64_t{1} << parent_level) - 1;
+    const Code parent_mask = (Code{1} << parent_level) - 1;
     // Only samples that can cover a whole child: along each axis the child's
     // far side lies at least a child edge (half of one in the same column)
     // beyond the gap between the cells. At level 1 that leaves the 3^D block.
@@ -441,12 +445,12 @@ class EbeidaSampler {
       const auto begin = static_cast<std::uint32_t>(subs.size());
       const std::uint32_t parents = parent_level == 0 ? 1 : o.sub_count;
       for (std::uint32_t k = 0; k < parents; ++k) {
-        const std::uint64_t parent = parent_level == 0 ? 0 : subs_[o.sub_begin + k];
+        const Code parent = parent_level == 0 ? 0 : subs_[o.sub_begin + k];
         // The children's faces along each axis, relative to the cell's corner.
         std::array<std::array<double, 3>, D> face;
         for (int a = 0; a < D; ++a) {
-          const std::uint64_t first = ((parent >> (a * parent_level)) & parent_mask) * 2;
-          for (int f = 0; f < 3; ++f) face[a][f] = static_cast<double>(first + f) * edge[a];
+          const Code first = ((parent >> (a * parent_level)) & parent_mask) * 2;
+          for (int f = 0; f < 3; ++f) face[a][f] = static_cast<double>(static_cast<std::uint64_t>(first) + f) * edge[a];
         }
         // A child is covered when its farthest corner is inside one disk: the
         // sum over axes of the larger squared distance to its two faces (the
@@ -469,9 +473,9 @@ class EbeidaSampler {
         }
         for (int child = 0; child < kChildren; ++child) {
           if (covered >> child & 1) continue;
-          std::uint64_t code = 0;
+          Code code = 0;
           for (int a = 0; a < D; ++a) {
-            const std::uint64_t i = ((parent >> (a * parent_level)) & parent_mask) * 2 + ((child >> a) & 1);
+            const Code i = ((parent >> (a * parent_level)) & parent_mask) * 2 + ((child >> a) & 1);
             code |= i << (a * level_);
           }
           subs.push_back(code);
@@ -502,7 +506,7 @@ class EbeidaSampler {
   Neighbours near_;  // the cells that may hold a sample closer than r to a point of a cell
   std::vector<std::int32_t> state_;
   std::vector<Open> open_;
-  std::vector<std::uint64_t> subs_;
+  std::vector<Code> subs_;
   PointSet<D> samples_;
   std::size_t sorted_ = 0;  // samples_ is in cell order up to here
 };
