@@ -109,12 +109,16 @@ class EbeidaSampler {
     std::vector<std::ptrdiff_t> linear;
   };
 
+  /// The open sub-cells of a slot: subs_[begin, begin + count) (level 0: the
+  /// whole cell, nothing stored, so a slot there takes 16 bytes).
+  struct Subs {
+    std::uint32_t begin, count;
+  };
+
   struct Open {
     std::uint32_t cell;
     std::uint32_t darts;      // darts of this cell drawn so far at this level
     double next_time;         // time of its next dart; infinity once settled
-    std::uint32_t sub_begin;  // its open sub-cells: subs_[sub_begin, sub_begin + sub_count)
-    std::uint32_t sub_count;  // (at level 0: the whole cell, nothing stored)
   };
 
  public:
@@ -188,7 +192,7 @@ class EbeidaSampler {
     open_.resize(stride);
     const std::uint64_t key = key_ = level_key(0);
     for (std::uint32_t c = 0; c < stride; ++c) {
-      open_[c] = Open{c, 0, 0.0, 0, 1};
+      open_[c] = Open{c, 0, 0.0};
       state_[c] = kOpen - static_cast<std::int32_t>(c);
       open_[c].next_time = waiting_time(key, c, 0, 1);
     }
@@ -299,14 +303,15 @@ class EbeidaSampler {
       const std::uint32_t dart = open.darts++;
       // Advance first: a neighbour settling up to an earlier time must not
       // see this dart again.
-      open.next_time += waiting_time(key, open.cell, dart + 1, open.sub_count);
+      const Subs subs = level_ == 0 ? Subs{0, 1} : subs_of_[slot];
+      open.next_time += waiting_time(key, open.cell, dart + 1, subs.count);
       Point<D> lo;
       std::array<double, D> edge;
       Code code = 0;
       const std::uint64_t base = dart_base(key, open.cell, dart);
       if (level_ > 0) {
-        const u128 pick = static_cast<u128>(dart_bits(base, D + 1)) * open.sub_count;
-        code = subs_[open.sub_begin + static_cast<std::uint32_t>(pick >> 64)];
+        const u128 pick = static_cast<u128>(dart_bits(base, D + 1)) * subs.count;
+        code = subs_[subs.begin + static_cast<std::uint32_t>(pick >> 64)];
       }
       sub_box(c, code, lo, edge);
       Point<D> x;
@@ -393,10 +398,12 @@ class EbeidaSampler {
       const Open& open = open_[slot];
       if (state_[open.cell] > kOpen) continue;
       open_[kept] = open;
+      if (level_ > 0) subs_of_[kept] = subs_of_[slot];
       state_[open.cell] = kOpen - static_cast<std::int32_t>(kept);
       ++kept;
     }
     open_.resize(kept);
+    if (level_ > 0) subs_of_.resize(kept);
     if (open_.capacity() > 4 * open_.size() + 1024) open_.shrink_to_fit();
   }
 
@@ -405,6 +412,7 @@ class EbeidaSampler {
   void refine(double start) {
     std::vector<Code> subs;
     std::vector<Open> open;
+    std::vector<Subs> subs_of;
     std::vector<std::array<double, D>> near;  // nearby samples, relative to the cell's lower corner
     const std::uint64_t key = key_ = level_key(level_);
     const int parent_level = level_ - 1;
@@ -422,7 +430,8 @@ class EbeidaSampler {
       }
       if (least2 < r2_) add(cover, off);
     }
-    for (const Open& o : open_) {
+    for (std::uint32_t slot = 0; slot < open_.size(); ++slot) {
+      const Open& o = open_[slot];
       const std::array<int, D> c = coords(o.cell);
       std::array<double, D> cell_lo, edge;
       for (int a = 0; a < D; ++a) {
@@ -443,9 +452,10 @@ class EbeidaSampler {
         return false;
       });
       const auto begin = static_cast<std::uint32_t>(subs.size());
-      const std::uint32_t parents = parent_level == 0 ? 1 : o.sub_count;
+      const Subs parent_subs = parent_level == 0 ? Subs{0, 1} : subs_of_[slot];
+      const std::uint32_t parents = parent_subs.count;
       for (std::uint32_t k = 0; k < parents; ++k) {
-        const Code parent = parent_level == 0 ? 0 : subs_[o.sub_begin + k];
+        const Code parent = parent_level == 0 ? 0 : subs_[parent_subs.begin + k];
         // The children's faces along each axis, relative to the cell's corner.
         std::array<std::array<double, 3>, D> face;
         for (int a = 0; a < D; ++a) {
@@ -487,10 +497,12 @@ class EbeidaSampler {
         continue;
       }
       state_[o.cell] = kOpen - static_cast<std::int32_t>(open.size());
-      open.push_back(Open{o.cell, 0, start + waiting_time(key, o.cell, 0, count), begin, count});
+      open.push_back(Open{o.cell, 0, start + waiting_time(key, o.cell, 0, count)});
+      subs_of.push_back(Subs{begin, count});
     }
     open_ = std::move(open);
     subs_ = std::move(subs);
+    subs_of_ = std::move(subs_of);
   }
 
   const Domain<D>& domain_;
@@ -507,6 +519,7 @@ class EbeidaSampler {
   std::vector<std::int32_t> state_;
   std::vector<Open> open_;
   std::vector<Code> subs_;
+  std::vector<Subs> subs_of_;  // per slot, from level 1 on
   PointSet<D> samples_;
   std::size_t sorted_ = 0;  // samples_ is in cell order up to here
 };
