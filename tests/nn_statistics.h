@@ -12,6 +12,18 @@
 
 namespace pds::testing_stats {
 
+/// A domain off the origin and not a square or cube (2D: [0, 1.25) x [-1, 0);
+/// 3D: [-0.5, 0.5) x [0, 1.5) x [2, 2.8)), so that no sampler gets away with
+/// assuming the unit square.
+template <int D>
+Domain<D> offset_domain(bool torus) {
+  if constexpr (D == 2) {
+    return Domain<2>{{{0.0, -1.0}}, {{1.25, 0.0}}, torus};
+  } else {
+    return Domain<3>{{{-0.5, 0.0, 2.0}}, {{0.5, 1.5, 2.8}}, torus};
+  }
+}
+
 /// Mean nearest-neighbour distance in units of r, and the fraction of points
 /// whose nearest neighbour is closer than 1.1 r.
 struct NnSummary {

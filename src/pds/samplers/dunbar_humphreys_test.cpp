@@ -11,12 +11,10 @@
 namespace pds {
 namespace {
 
-Domain<2> test_domain(bool torus) { return Domain<2>{{{0.0, -1.0}}, {{1.25, 0.0}}, torus}; }
-
 TEST(DunbarHumphreys, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
   const double r = 0.02;  // about 2700 samples
   for (bool torus : {false, true}) {
-    const auto domain = test_domain(torus);
+    const auto domain = testing_stats::offset_domain<2>(torus);
     const auto points = dunbar_humphreys({r}, domain, 5);
     ASSERT_GT(points.size(), 2000u);
     EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
@@ -28,7 +26,7 @@ TEST(DunbarHumphreys, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
 }
 
 TEST(DunbarHumphreys, SameSeedSamePointsOtherSeedOtherPoints) {
-  const auto domain = test_domain(false);
+  const auto domain = testing_stats::offset_domain<2>(false);
   EXPECT_EQ(dunbar_humphreys({0.03}, domain, 3), dunbar_humphreys({0.03}, domain, 3));
   EXPECT_NE(dunbar_humphreys({0.03}, domain, 3), dunbar_humphreys({0.03}, domain, 4));
 }
@@ -45,7 +43,7 @@ TEST(DunbarHumphreys, RejectsBadInput) {
 TEST(DunbarHumphreys, EverySampleHasANeighbourAtExactlyTheRadius) {
   const double r = 0.03;
   for (bool torus : {false, true}) {
-    const auto domain = test_domain(torus);
+    const auto domain = testing_stats::offset_domain<2>(torus);
     const auto nn = nearest_neighbors(dunbar_humphreys({r}, domain, 9), domain);
     for (double d : nn.distance) {
       EXPECT_GE(d, r);
@@ -77,8 +75,7 @@ void expect_maximal_poisson_disk(const PointSet<2>& points, const Domain<2>& dom
   EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
   for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
   const auto mx = check_maximality(points, domain, r, 1e-9 * r);
-  EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
-                          << mx.gap_distance;
+  EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance " << mx.gap_distance;
 }
 
 // Variant 1, the paper's scalloped sectors over the annulus r..2r.
@@ -91,14 +88,14 @@ DunbarHumphreysParams sectors(double r) {
 TEST(DunbarHumphreysSectors, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
   const double r = 0.02;  // about 2300 samples
   for (bool torus : {false, true}) {
-    const auto domain = test_domain(torus);
+    const auto domain = testing_stats::offset_domain<2>(torus);
     const auto points = dunbar_humphreys(sectors(r), domain, 5);
     expect_maximal_poisson_disk(points, domain, r);
   }
 }
 
 TEST(DunbarHumphreysSectors, SameSeedSamePointsOtherSeedOtherPoints) {
-  const auto domain = test_domain(true);
+  const auto domain = testing_stats::offset_domain<2>(true);
   EXPECT_EQ(dunbar_humphreys(sectors(0.03), domain, 3), dunbar_humphreys(sectors(0.03), domain, 3));
   EXPECT_NE(dunbar_humphreys(sectors(0.03), domain, 3), dunbar_humphreys(sectors(0.03), domain, 4));
   EXPECT_NE(dunbar_humphreys(sectors(0.03), domain, 3), dunbar_humphreys({0.03}, domain, 3));
@@ -155,14 +152,14 @@ DunbarHumphreysParams global_sectors(double r) {
 TEST(DunbarHumphreysGlobalSectors, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
   const double r = 0.02;  // about 2200 samples
   for (bool torus : {false, true}) {
-    const auto domain = test_domain(torus);
+    const auto domain = testing_stats::offset_domain<2>(torus);
     const auto points = dunbar_humphreys(global_sectors(r), domain, 5);
     expect_maximal_poisson_disk(points, domain, r);
   }
 }
 
 TEST(DunbarHumphreysGlobalSectors, SameSeedSamePointsOtherSeedOtherPoints) {
-  const auto domain = test_domain(false);
+  const auto domain = testing_stats::offset_domain<2>(false);
   EXPECT_EQ(dunbar_humphreys(global_sectors(0.03), domain, 3), dunbar_humphreys(global_sectors(0.03), domain, 3));
   EXPECT_NE(dunbar_humphreys(global_sectors(0.03), domain, 3), dunbar_humphreys(global_sectors(0.03), domain, 4));
   EXPECT_THROW(dunbar_humphreys(global_sectors(0.17), Domain<2>::unit(true), 1), InvalidArgument);

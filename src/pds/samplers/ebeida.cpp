@@ -117,8 +117,8 @@ class EbeidaSampler {
 
   struct Open {
     std::uint32_t cell;
-    std::uint32_t darts;      // darts of this cell drawn so far at this level
-    double next_time;         // time of its next dart; infinity once settled
+    std::uint32_t darts;  // darts of this cell drawn so far at this level
+    double next_time;     // time of its next dart; infinity once settled
   };
 
  public:
@@ -515,7 +515,7 @@ class EbeidaSampler {
   std::array<std::size_t, D> stride_{};
   std::array<std::vector<double>, D> corners_;  // cell boundaries per axis, n + 1 each
   std::array<std::vector<int>, D> wrap_;        // neighbour coordinate -> cell coordinate (-1: outside a box)
-  Neighbours near_;  // the cells that may hold a sample closer than r to a point of a cell
+  Neighbours near_;                             // the cells that may hold a sample closer than r to a point of a cell
   std::vector<std::int32_t> state_;
   std::vector<Open> open_;
   std::vector<Code> subs_;

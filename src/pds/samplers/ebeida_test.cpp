@@ -16,18 +16,9 @@ namespace pds {
 namespace {
 
 template <int D>
-Domain<D> test_domain(bool torus) {
-  if constexpr (D == 2) {
-    return Domain<2>{{{0.0, -1.0}}, {{1.25, 0.0}}, torus};
-  } else {
-    return Domain<3>{{{-0.5, 0.0, 2.0}}, {{0.5, 1.5, 2.8}}, torus};
-  }
-}
-
-template <int D>
 void check_set(double r) {
   for (bool torus : {false, true}) {
-    const auto domain = test_domain<D>(torus);
+    const auto domain = testing_stats::offset_domain<D>(torus);
     const auto points = ebeida<D>({r}, domain, 5);
     ASSERT_GT(points.size(), 1000u);
     EXPECT_GE(min_distance_brute_force(points, domain).distance, r) << domain;

@@ -11,12 +11,10 @@
 namespace pds {
 namespace {
 
-Domain<2> test_domain(bool torus) { return Domain<2>{{{0.0, -1.0}}, {{1.25, 0.0}}, torus}; }
-
 TEST(Jones, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
   const double r = 0.02;  // about 2200 samples
   for (bool torus : {false, true}) {
-    const auto domain = test_domain(torus);
+    const auto domain = testing_stats::offset_domain<2>(torus);
     const auto points = jones({r}, domain, 5);
     ASSERT_GT(points.size(), 1500u);
     EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
@@ -28,7 +26,7 @@ TEST(Jones, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
 }
 
 TEST(Jones, SameSeedSamePointsOtherSeedOtherPoints) {
-  const auto domain = test_domain(true);
+  const auto domain = testing_stats::offset_domain<2>(true);
   EXPECT_EQ(jones({0.05}, domain, 3), jones({0.05}, domain, 3));
   EXPECT_NE(jones({0.05}, domain, 3), jones({0.05}, domain, 4));
 }

@@ -15,18 +15,9 @@ namespace pds {
 namespace {
 
 template <int D>
-Domain<D> test_domain(bool torus) {
-  if constexpr (D == 2) {
-    return Domain<2>{{{0.0, -1.0}}, {{1.25, 0.0}}, torus};
-  } else {
-    return Domain<3>{{{-0.5, 0.0, 2.0}}, {{0.5, 1.5, 2.8}}, torus};
-  }
-}
-
-template <int D>
 void check_basic(double r) {
   for (bool torus : {false, true}) {
-    const auto domain = test_domain<D>(torus);
+    const auto domain = testing_stats::offset_domain<D>(torus);
     WeiParams params;
     params.radius = r;
     const auto points = wei<D>(params, domain, 5);
@@ -44,7 +35,7 @@ TEST(Wei, MinimumDistanceInsideAndReproducible3D) { check_basic<3>(0.1); }
 template <int D>
 void check_threads(double r) {
   for (bool torus : {false, true}) {
-    const auto domain = test_domain<D>(torus);
+    const auto domain = testing_stats::offset_domain<D>(torus);
     WeiParams params;
     params.radius = r;
     params.threads = 1;
@@ -65,7 +56,7 @@ TEST(Wei, SameBytesForOneTwoAndFourThreads3D) { check_threads<3>(0.08); }
 // Each level only adds samples: the output with L levels contains the output
 // with L - 1 levels (same seed), and the finer levels add to it.
 TEST(Wei, FinerLevelsOnlyAddSamples) {
-  const auto domain = test_domain<2>(true);
+  const auto domain = testing_stats::offset_domain<2>(true);
   WeiParams params;
   params.radius = 0.02;
   auto less = [](const Point<2>& a, const Point<2>& b) { return a < b; };
