@@ -17,7 +17,7 @@
 // proven maximal. Relative radius ~0.73 (2D) measured, docs/bridson.md.
 //
 // Complexity: O(k N) candidate checks, each a fixed number of cells (the own
-// cell and 15 neighbours in 2D, 91 in 3D, for the usual reach of 2; typically
+// cell and 15 neighbours in 2D, and 90 in 3D, for the usual reach of 2; typically
 // the first 8, nearest cells first). Memory: the grid, about 3 cells a sample
 // in 2D and 5 in 3D.
 //
@@ -301,7 +301,7 @@ class AnnulusOffsets {
   AnnulusOffsets(double r, std::uint64_t seed)
       : inner2_(r * r),
         outer2_(4.0 * r * r),
-        half_width_(2.0 * r),
+        step_(2.0 * r * 0x1.0p-52),
         streams_(make_streams(seed, std::make_index_sequence<D>())) {}
 
   [[gnu::always_inline]] const Point<D>& next() {
@@ -316,9 +316,9 @@ class AnnulusOffsets {
       Point<D> v;
       double s = 0.0;
       for (int i = 0; i < D; ++i) {
-        // Uniform in [-1, 1) on a grid of 2^-52: the top 53 bits as a signed value.
-        const double u = static_cast<double>(static_cast<std::int64_t>(streams_[i].next()) >> 11) * 0x1.0p-52;
-        v[i] = u * half_width_;
+        // Uniform in [-2r, 2r) on a grid of 2r 2^-52: the top 53 bits as a
+        // signed value times `step_` (one rounding, as (value 2^-52) 2r has).
+        v[i] = static_cast<double>(static_cast<std::int64_t>(streams_[i].next()) >> 11) * step_;
         s += v[i] * v[i];
       }
       batch_[n] = v;
@@ -333,7 +333,7 @@ class AnnulusOffsets {
   }
 
   static constexpr std::size_t kBatch = 64;
-  double inner2_, outer2_, half_width_;
+  double inner2_, outer2_, step_;
   std::array<Rng, D> streams_;
   std::size_t next_ = kBatch;
   std::array<Point<D>, kBatch + 1> batch_;  // one spare slot for the last rejected draw
