@@ -106,6 +106,7 @@ class BridsonGrid {
     empty.fill(std::numeric_limits<double>::quiet_NaN());
     grid_.assign(stride, empty);
     build_offsets(radius);
+    // Offsets of the rows (along axis 0) that prefetch_around() fetches.
     std::array<int, D> o;
     o.fill(-kPrefetchReach);
     o[0] = 0;
@@ -252,7 +253,7 @@ class BridsonGrid {
   // every cell a 2D candidate reads (2r + r = 4.2 cell edges); in 3D the same
   // cover is ~1000 cells, so only the nearest 5^3 are fetched (measured).
   static constexpr int kPrefetchReach = D == 2 ? 5 : 2;
-  static constexpr int kMaxReach = 3;       // floor(sqrt(D)) + 1 for D <= 4
+  static constexpr int kMaxReach = 3;  // floor(sqrt(D)) + 1 for D <= 4
 
   // On a torus, the margin cells mirror the cells of the opposite faces: a
   // sample is written to every padded position congruent to its cell.
