@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "pds/analysis/distance.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
@@ -29,6 +31,26 @@ TEST(Bridson, PeriodsShorterThanTheNeighbourhood) {
   }
   const auto thin = Domain<3>::torus({0, 0, 0}, {0.15, 1, 0.25});
   expect_poisson_disk(bridson(params, thin, 4), thin, params.radius);
+}
+
+TEST(Bridson, PeriodsAroundTheInteriorThreshold) {
+  // The torus scan skips the min-image correction in cells whose whole
+  // neighbourhood is inside the domain, which needs more than 2 (reach + 1)
+  // cells along the axis (6 for r / cell edge ~1.4): periods of 5 to 9 cells
+  // put the threshold on either side, and the oracle takes the min image.
+  BridsonParams params;
+  params.radius = 0.1;
+  const double edge = 0.1 / std::sqrt(2.0);
+  for (int cells = 5; cells <= 9; ++cells)
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+      const Domain<2> domain = Domain<2>::torus({0, 0}, {cells * edge * 0.999, 0.73});
+      expect_poisson_disk(bridson(params, domain, seed), domain, params.radius);
+    }
+  const double edge3 = 0.1 / std::sqrt(3.0);
+  for (int cells = 5; cells <= 9; ++cells) {
+    const Domain<3> domain = Domain<3>::torus({0, 0, 0}, {cells * edge3 * 0.999, 0.5, 0.4});
+    expect_poisson_disk(bridson(params, domain, 3), domain, params.radius);
+  }
 }
 
 TEST(Bridson, AxesWithFewerWiderCells) {
