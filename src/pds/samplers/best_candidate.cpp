@@ -204,15 +204,33 @@ class GapBoxes {
     dirty_.assign(slots, 0);
   }
 
-  /// Sets every leaf's idle bound from the distance of its centre to the
-  /// nearest sample (plus half a diagonal); no live boxes yet.
-  template <class Nearest>
-  void start(const Nearest& distance2_to_nearest) {
+  /// Sets every leaf's idle bound (no live boxes yet): the smallest
+  /// farthest-corner distance to the samples near it. `nearest2(p)` is the
+  /// squared distance from p to the nearest sample; `gather(p, r, out)` puts
+  /// the samples within r of p in out.
+  template <class Nearest2, class Gather>
+  void start(const Nearest2& nearest2, const Gather& gather) {
+    PointSet<D> near;
     for (std::size_t j = 0; j < count_.size(); ++j) {
       const auto c = coords(j);
       bool real = true;
       for (int i = 0; i < D; ++i) real &= c[i] < cells_[i];
-      if (real) tree_[size_ + j] = std::sqrt(distance2_to_nearest(centre(j))) * (1.0 + 1e-12) + half_diagonal_;
+      if (!real) continue;
+      // Via the sample nearest the centre no point of the leaf is farther
+      // than `loose`; the samples near the leaf give a tighter bound.
+      const Point<D> middle = centre(j), lo = leaf_lo(j);
+      const double loose = std::sqrt(nearest2(middle)) * (1.0 + 1e-12) + half_diagonal_;
+      gather(middle, loose + half_diagonal_, near);
+      double bound2 = loose * loose;
+      for (const auto& q : near) {
+        double far2 = 0.0;
+        for (int i = 0; i < D; ++i) {
+          const double far = farthest(q[i], lo[i], c[i] + 1 == cells_[i] ? domain_.hi[i] : lo[i] + edge_[i], i);
+          far2 += far * far;
+        }
+        bound2 = std::min(bound2, far2);
+      }
+      tree_[size_ + j] = std::sqrt(bound2) * (1.0 + 1e-12);
     }
     for (std::size_t n = size_ - 1; n >= 1; --n) tree_[n] = std::max(tree_[2 * n], tree_[2 * n + 1]);
   }
@@ -677,7 +695,8 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
         }
         boxes.emplace(domain, target * kLeavesPerSample<D>);
         theta = kInf;
-        boxes->start([&](const Point<D>& c) { return nearest.nearest2(c); });
+        boxes->start([&](const Point<D>& p) { return nearest.nearest2(p); },
+                     [&](const Point<D>& p, double r, PointSet<D>& out) { nearest.gather(p, r, out); });
       }
       const double lambda = static_cast<double>(candidates) / domain.volume();  // candidates per unit volume
       theta = std::min(theta, (1.0 - kThresholdShare) * typical / std::sqrt(static_cast<double>(i)));
