@@ -643,6 +643,14 @@ template <int D>
 BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, const Domain<D>& domain,
                                           std::uint64_t seed) {
   validate(params, domain);
+  // The leaves, up to kLeavesPerSample for each of the final samples (a
+  // radius alone leaves about 0.6 of the packing bound): refuse at once what
+  // would exceed the cell budget later.
+  const double expected =
+      params.count ? static_cast<double>(*params.count) : 0.6 * packing_count(domain.volume(), *params.radius, D);
+  if (expected * kLeavesPerSample < D >> static_cast<double>(kMaxGridCells))
+    throw InvalidArgument("best-candidate: the request needs more than " + std::to_string(kMaxGridCells) +
+                          " leaf cells (" + format(expected) + " samples)");
   NearestSample<D> nearest(domain);
   std::optional<GapBoxes<D>> boxes;
   std::uint64_t rebuild_at = 0;

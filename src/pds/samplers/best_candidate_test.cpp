@@ -214,6 +214,12 @@ TEST(BestCandidate, BadParameters) {
   EXPECT_THROW(best_candidate(params, Domain<2>::unit(), 1), InvalidArgument);
   params.radius = 0.0;
   EXPECT_THROW(best_candidate(params, Domain<2>::unit(), 1), InvalidArgument);
+  // More leaf cells than the budget: refused at once, not after hours.
+  params.radius = 1e-6;
+  EXPECT_THROW(best_candidate(params, Domain<2>::unit(), 1), InvalidArgument);
+  params.radius.reset();
+  params.count = 1'000'000'000;
+  EXPECT_THROW(best_candidate(params, Domain<3>::unit(), 1), InvalidArgument);
   GenerateRequest r;
   r.count = 10;
   r.params = {{"m", 0}};
