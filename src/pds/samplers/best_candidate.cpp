@@ -352,29 +352,31 @@ class GapBoxes {
       const double scale = 1.0 / static_cast<double>(1 << level);
       Point<D> centre;
       for (int i = 0; i < D; ++i) centre[i] = lo[i] + 0.5 * edge_[i] * scale;
-      double upper2 = kInf, lower2 = kInf, centre2 = kInf;
-      std::size_t witness = 0;
-      for (std::size_t k = 0; k < local_.size(); ++k) {
-        const Point<D>& q = local_[k];
-        double far2 = 0.0, near2 = 0.0, d2 = 0.0;
+      Point<D> hi;
+      for (int i = 0; i < D; ++i) hi[i] = std::min(lo[i] + edge_[i] * scale, domain_.hi[i]);
+      // The upper bound first: most boxes end idle on it alone.
+      double upper2 = kInf;
+      for (const auto& q : local_) {
+        double far2 = 0.0;
         for (int i = 0; i < D; ++i) {
-          const double a = q[i] - lo[i], b = q[i] - std::min(lo[i] + edge_[i] * scale, domain_.hi[i]);
-          const double far = std::max(std::abs(a), std::abs(b)), close = a < 0 ? -a : b > 0 ? b : 0.0;
+          const double far = std::max(std::abs(q[i] - lo[i]), std::abs(q[i] - hi[i]));
           far2 += far * far;
-          near2 += close * close;
-          d2 += (q[i] - centre[i]) * (q[i] - centre[i]);
         }
         upper2 = std::min(upper2, far2);
-        lower2 = std::min(lower2, near2);
-        if (d2 < centre2) {
-          centre2 = d2;
-          witness = k;
-        }
       }
       const double upper = std::sqrt(upper2) * (1.0 + 1e-12);
       if (upper <= theta) {
         idle = std::max(idle, upper);
         continue;
+      }
+      double lower2 = kInf;
+      for (const auto& q : local_) {
+        double near2 = 0.0;
+        for (int i = 0; i < D; ++i) {
+          const double close = q[i] < lo[i] ? lo[i] - q[i] : q[i] > hi[i] ? q[i] - hi[i] : 0.0;
+          near2 += close * close;
+        }
+        lower2 = std::min(lower2, near2);
       }
       const double lower = std::sqrt(lower2) * (1.0 - 1e-12);
       if (lower <= theta && level < kMaxLevel && volume_ * scale_volume(level) > split_above) {
@@ -385,6 +387,16 @@ class GapBoxes {
           stack_.push_back({c, level + 1});
         }
         continue;
+      }
+      double centre2 = kInf;
+      std::size_t witness = 0;
+      for (std::size_t k = 0; k < local_.size(); ++k) {
+        double d2 = 0.0;
+        for (int i = 0; i < D; ++i) d2 += (local_[k][i] - centre[i]) * (local_[k][i] - centre[i]);
+        if (d2 < centre2) {
+          centre2 = d2;
+          witness = k;
+        }
       }
       arena_.push_back({lo, near[witness], upper, static_cast<std::uint32_t>(leaf), level});
       lists_[level].push_back(static_cast<std::uint32_t>(arena_.size() - 1));
