@@ -318,12 +318,12 @@ class GapBoxes {
   }
 
   /// Re-makes the leaf against threshold theta: branch and bound over its
-  /// dyadic sub-boxes against `near` (which must hold every sample within
-  /// near_radius(leaf) of its centre). A box whose bound is <= theta joins the
-  /// idle part; a box that may hold points above theta is split while it
-  /// also holds points below it, its expected candidates (lambda x volume)
-  /// exceed kSplitBelow and the level is below kMaxLevel; else it becomes a
-  /// live box. Old live boxes die.
+  /// dyadic sub-boxes against `near` (the samples within near_radius(leaf) of
+  /// its centre; any subset keeps the bounds valid, this one makes them
+  /// tight). A box whose upper bound is <= theta joins the idle part; a box
+  /// that may hold points above theta is split while it may also hold points
+  /// below it, its volume exceeds split_above and the level is below
+  /// kMaxLevel; else it becomes a live box. Old live boxes die.
   void tighten(std::size_t leaf, const PointSet<D>& near, double theta, double split_above) {
     dirty_[leaf] = 0;
     const double total = near_radius(leaf) - half_diagonal_;
