@@ -144,7 +144,7 @@ void BM_DartThrowingToExhaustion(benchmark::State& state) {
 }
 BENCHMARK(BM_DartThrowingToExhaustion<2>)->Arg(10'000)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
-// Best-candidate with a count (m = 10).
+// Best-candidate with a count, on the unit torus (args: count, m).
 template <int D>
 void BM_BestCandidate(benchmark::State& state) {
   const auto domain = pds::Domain<D>::unit(true);
@@ -159,7 +159,12 @@ BENCHMARK(BM_BestCandidate<2>)
     ->Args({10'000, 10})
     ->Args({10'000, 1})
     ->Args({100'000, 10})
+    ->Args({1'000'000, 10})
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_BestCandidate<3>)->Args({1'000, 10})->Args({3'000, 10})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BestCandidate<3>)
+    ->Args({1'000, 10})
+    ->Args({10'000, 10})
+    ->Args({100'000, 10})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

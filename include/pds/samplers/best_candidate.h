@@ -47,7 +47,7 @@ struct BestCandidateResult {
 /// Candidates: the first sample is uniform; then exactly m*i uniform
 /// candidates while m*i < kBestCandidateExactBelow, and from there on a
 /// Poisson process of candidates with mean m*i (count within a few per cent
-/// of m*i), which lets the search skip every cell that cannot hold the
+/// of m*i), which lets the search skip every region that cannot hold the
 /// winner. Distances are the domain's (nearest periodic image on a torus).
 /// Guarantees: samples in [lo, hi); same seed, same points; each reported
 /// distance is exact (Domain::distance2).

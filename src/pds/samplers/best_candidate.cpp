@@ -7,45 +7,60 @@
 // nearest periodic image counts). Every prefix of the output is well spread.
 //
 // Taken literally that is m*i nearest-sample queries a sample, O(m N^2): 5e10
-// queries for N = 10^5, m = 10. Two structures, both adapting to the
-// density, cut that down while keeping the distribution of the winner:
-//  * A background grid of the samples for exact nearest-sample distances,
-//    rebuilt with about one sample a cell whenever the count doubles.
-//  * Leaf cells (16 per final sample in 2D, 8 in 3D) each with an upper bound U on
-//    the distance from any of its points to the nearest sample, in a max
-//    tree. A new sample lowers U to its farthest-corner distance in the
-//    leaves near it. A leaf visited while loose is tightened: branch and
-//    bound over sub-boxes (down to 1/16 of the leaf edge in 2D, 1/8 in 3D,
-//    or until within 5% of an edge) against the samples near it brings U
-//    close to the true maximum, or proves it below the round's best.
-//    Each leaf keeps a nearby sample: a candidate no farther from it than
-//    the best distance so far cannot win (no nearest-sample query needed).
-// Once m*i >= 256, the candidates are drawn as a Poisson process of mean m*i
-// (independent Poisson counts per leaf, uniform positions): the candidates of
-// a leaf with U <= the best distance found so far cannot win and need not be
-// drawn at all. Leaves are visited largest U first through the max tree (leaf
-// ids go tile by tile, so a subtree is a compact block of space), and a
-// leaf's candidates come from a hash of (seed, round, leaf), so the result
-// does not depend on the visiting order or on how tight the bounds were. The
-// winner is exactly the farthest point of the Poisson process; the only
-// departure from Mitchell is that the candidate count is Poisson(m*i) rather
-// than exactly m*i (a relative spread of 1/sqrt(m*i) <= 6%).
+// queries for N = 10^5, m = 10. While m*i < 256 we do exactly that. From
+// there on the m*i candidates are replaced by a Poisson process of mean m*i
+// (intensity lambda = m*i / volume), and the winner is exactly the farthest
+// point of that process, found without drawing most of it:
+//  * A background grid of the samples gives exact nearest-sample distances
+//    (rebuilt with about one sample a cell whenever the count doubles).
+//  * The domain is cut into leaf cells (rebuilt for twice the samples so far
+//    whenever the count doubles). Each leaf is split into live boxes, dyadic
+//    sub-boxes that may hold points farther than a threshold theta (with an
+//    upper bound on that distance), and an idle rest with an upper bound F,
+//    kept in a max tree. Branch and bound over sub-boxes against the samples
+//    near the leaf makes this split ("tightening"); it runs for a leaf when
+//    a new sample may cut its live boxes, or when theta falls below its F.
+//  * A round draws, for each box size, ONE Poisson count of mean lambda x box
+//    volume x (entries in that size's list), each candidate in a uniformly
+//    chosen entry. Entries of boxes that died since (their leaf was tightened
+//    again) are skipped: thinning a Poisson count by a fixed probability per
+//    point leaves each live box exactly Poisson(lambda x its volume), all of
+//    them independent. A round thus costs about the candidates that fall in
+//    the live boxes, not the number of gaps.
+//  * If the best candidate of the live boxes exceeds every idle bound F, it
+//    is the winner: no idle point is that far from the samples. Otherwise
+//    (rare) every leaf with F above the best so far draws its own Poisson
+//    count over the whole leaf (from a hash of seed, round and leaf) and
+//    drops the candidates inside its live boxes, which were already drawn.
+// Exactness: the live boxes and the idle parts are disjoint and cover the
+// domain, and they are fixed before the round's random numbers are drawn,
+// so the candidates are a Poisson process of intensity lambda on the whole
+// domain (independent counts on disjoint regions, uniform positions), and
+// every candidate that is not evaluated provably cannot beat the best (it
+// lies where the upper bound is below the best, or no farther from a
+// sample than the best). Thresholds, margins and leaf sizes only change
+// the speed. The one departure from Mitchell is the Poisson candidate
+// count (relative spread 1/sqrt(m*i) <= 6%); a test compares the output
+// with the literal method statistically.
 //
 // Guarantees: samples in [lo, hi); same seed, same points; the reported
 // distances are exact. No minimum distance is promised unless a radius is
 // given. Measured relative radius ~0.75 (m = 10), docs/best-candidate.md.
 //
-// Complexity and limits: the leaves that must be looked at in a round are
-// those whose gap exceeds the round's best distance, and their number grows
-// with N (measured about N^1.6 in total, docs/best-candidate.md): 2D sets of
-// 10^4 take seconds, 10^5 about a minute; 3D is several times slower. Memory
-// about 16 (2D) or 8 (3D) leaves of 40-65 bytes a sample (1 GB for 10^6 in 2D).
+// Complexity and limits: per round, about a hundred live-box candidates (most
+// rejected by a stored nearby sample without a query) and some twenty leaf
+// tightenings in 2D (more in 3D), both growing slowly with i; in all about
+// N^1.2 (docs/best-candidate.md: 10^5 in 2D in 8.5 s, 10^6 in 147 s, 10^5 in
+// 3D in 58 s). Memory: the leaves (4 a sample in 2D, 16 in 3D, for up to
+// twice the samples) of about 40 bytes, plus the live boxes (well under one
+// per sample, ~60-90 bytes).
 
 #include "pds/samplers/best_candidate.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -61,11 +76,27 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Leaf cells per expected sample: small leaves keep the candidates of a
-// visited leaf few; measured best at 16 in 2D (2x faster than 4 at 16,000
-// samples) and 8 in 3D.
+// Leaf cells per sample, for twice the samples placed when the leaves are
+// rebuilt. Measured (CPU time, m = 10, torus): 2D hardly cares between 4 and
+// 16; 3D runs 1.4x faster with 16 than with 4 (smaller leaves, fewer samples
+// and sub-boxes in each branch and bound).
 template <int D>
-constexpr double kLeavesPerSample = D == 2 ? 16.0 : 8.0;
+constexpr double kLeavesPerSample = D == 2 ? 4.0 : 16.0;
+
+// A round's threshold theta follows the best distance from below: it is
+// kThresholdShare below a running mean of best x sqrt(i) (weight
+// kTypicalWeight), scaled to round i, and never rises between two
+// rebuilds of the leaves. Leaves are tightened against theta x (1 - margin), with margin
+// kTightenMargin x (1000 / i)^(1/3) (at least kMarginMin), so that they stay
+// valid while theta drifts down; the live boxes are split until their
+// expected candidates a round fall to kSplitBelow x (1000 / i)^(2/3) (at
+// least kSplitMin). The shrinking factors follow the gaps near the top,
+// which get fewer relative to i (about i^(2/3) above the best) and smaller.
+// Measured on the 2D torus with m = 10; none of these affects the output
+// distribution, only the speed.
+constexpr double kThresholdShare = 0.01, kTypicalWeight = 0.05;
+constexpr double kTightenMargin = 0.03, kMarginMin = 0.002;
+constexpr double kSplitBelow = 1.0 / 32, kSplitMin = 1.0 / 4096;
 
 std::string format(double v) {
   std::ostringstream os;
@@ -106,12 +137,43 @@ std::uint64_t poisson_above_zero(double u, double lambda, double p0) {
   return k;
 }
 
-// Leaf cells with an upper bound U on the distance from any of their points
-// to the nearest sample, and a max tree over the bounds.
+// Poisson(mean) for any mean >= 0 from `rng`, as a sum of draws of mean <= 64
+// (inversion alone would underflow e^-mean for large means).
+std::uint64_t poisson(double mean, Rng& rng) {
+  std::uint64_t n = 0;
+  while (mean > 0.0) {
+    const double part = std::min(mean, 64.0);
+    mean -= part;
+    const double p0 = exp_neg(part), u = rng.uniform();
+    if (u >= p0) n += poisson_above_zero(u, part, p0);
+  }
+  return n;
+}
+
+// The domain cut into leaf cells (about kLeavesPerSample per sample, rebuilt
+// as the count grows), each split into two disjoint parts:
+//  * live boxes: dyadic sub-boxes of the leaf that may hold points farther
+//    than the threshold they were made against, each with an upper bound on
+//    the distance from its points to the nearest sample. They sit in one list
+//    per size, so that one Poisson count per list covers all of them.
+//  * the idle rest of the leaf, with an upper bound F in a max tree.
+// A leaf is re-made ("tightened") by branch and bound over its sub-boxes
+// against the samples near it; its old boxes are then marked dead and stay in
+// the lists until compaction.
 template <int D>
-class LeafBounds {
+class GapBoxes {
  public:
-  LeafBounds(const Domain<D>& domain, double target_leaves) : domain_(domain) {
+  struct Box {
+    Point<D> lo;
+    Point<D> witness;    // a sample near the box: a candidate no farther from it than the best cannot win
+    double bound;        // no point of the box is farther than this from every sample
+    std::uint32_t leaf;  // kDead once the leaf is tightened again
+    int level;           // edges are the leaf's times 2^-level
+  };
+  static constexpr int kMaxLevel = D == 2 ? 7 : 5;
+  static constexpr std::uint32_t kDead = UINT32_MAX;
+
+  GapBoxes(const Domain<D>& domain, double target_leaves) : domain_(domain) {
     const double edge = std::pow(domain.volume() / target_leaves, 1.0 / D);
     leaves_ = 1;
     std::size_t tiles = 1;
@@ -126,31 +188,60 @@ class LeafBounds {
         throw InvalidArgument("best-candidate: the request needs more than " + std::to_string(kMaxGridCells) +
                               " leaf cells");
     }
+    volume_ = 1.0;
+    half_diagonal_ = 0.0;
+    for (int i = 0; i < D; ++i) {
+      volume_ *= edge_[i];
+      half_diagonal_ += 0.25 * edge_[i] * edge_[i];
+    }
+    half_diagonal_ = std::sqrt(half_diagonal_) * (1.0 + 1e-9);
     const std::size_t slots = tiles * kTileSlots;
     size_ = 1;
     while (size_ < slots) size_ *= 2;
     tree_.assign(2 * size_, -kInf);
-    tight_.assign(slots, 1);
-    Point<D> none;
-    none.fill(std::numeric_limits<double>::quiet_NaN());
-    witness_.assign(slots, none);
-    for (std::size_t j = 0; j < slots; ++j) {
+    first_.assign(slots, 0);
+    count_.assign(slots, 0);
+    live_max_.assign(slots, -kInf);
+    dirty_.assign(slots, 0);
+  }
+
+  /// Sets every leaf's idle bound (no live boxes yet): the smallest
+  /// farthest-corner distance to the samples near it. `nearest2(p)` is the
+  /// squared distance from p to the nearest sample; `gather(p, r, out)` puts
+  /// the samples within r of p in out.
+  template <class Nearest2, class Gather>
+  void start(const Nearest2& nearest2, const Gather& gather) {
+    PointSet<D> near;
+    for (std::size_t j = 0; j < count_.size(); ++j) {
       const auto c = coords(j);
       bool real = true;
       for (int i = 0; i < D; ++i) real &= c[i] < cells_[i];
-      if (real) {
-        tree_[size_ + j] = kInf;
-        tight_[j] = 0;
+      if (!real) continue;
+      // Via the sample nearest the centre no point of the leaf is farther
+      // than `loose`; the samples near the leaf give a tighter bound.
+      const Point<D> middle = centre(j), lo = leaf_lo(j);
+      const double loose = std::sqrt(nearest2(middle)) * (1.0 + 1e-12) + half_diagonal_;
+      gather(middle, loose + half_diagonal_, near);
+      double bound2 = loose * loose;
+      for (const auto& q : near) {
+        double far2 = 0.0;
+        for (int i = 0; i < D; ++i) {
+          const double far = farthest(q[i], lo[i], c[i] + 1 == cells_[i] ? domain_.hi[i] : lo[i] + edge_[i], i);
+          far2 += far * far;
+        }
+        bound2 = std::min(bound2, far2);
       }
+      tree_[size_ + j] = std::sqrt(bound2) * (1.0 + 1e-12);
     }
     for (std::size_t n = size_ - 1; n >= 1; --n) tree_[n] = std::max(tree_[2 * n], tree_[2 * n + 1]);
   }
 
-  /// The number of leaves (leaf ids run over more slots: see id()).
   std::size_t leaves() const { return leaves_; }
+  double leaf_volume() const { return volume_; }
+  double idle_bound(std::size_t leaf) const { return tree_[size_ + leaf]; }
+  double max_idle_bound() const { return tree_[1]; }
   /// No point of the domain is farther than this from every sample.
-  double max_bound() const { return tree_[1]; }
-  double bound(std::size_t leaf) const { return tree_[size_ + leaf]; }
+  double reach() const { return std::max(tree_[1], live_max_all_); }
 
   Point<D> leaf_lo(std::size_t leaf) const {
     const auto c = coords(leaf);
@@ -158,15 +249,30 @@ class LeafBounds {
     for (int i = 0; i < D; ++i) p[i] = domain_.lo[i] + static_cast<double>(c[i]) * edge_[i];
     return p;
   }
-  const std::array<double, D>& edge() const { return edge_; }
+  Point<D> centre(std::size_t leaf) const {
+    Point<D> p = leaf_lo(leaf);
+    for (int i = 0; i < D; ++i) p[i] += 0.5 * edge_[i];
+    return p;
+  }
 
-  /// Lowers the bounds of the leaves whose centre is nearer to the new sample.
+  /// A uniform point of the box at `lo` with edges edge * scale.
+  Point<D> uniform_in(const Point<D>& lo, double scale, Rng& rng) const {
+    Point<D> c;
+    for (int k = 0; k < D; ++k)
+      c[k] = std::min(lo[k] + rng.uniform() * edge_[k] * scale, std::nextafter(domain_.hi[k], domain_.lo[k]));
+    return c;
+  }
+
+  /// A new sample: lowers the idle bounds of the leaves near it to their
+  /// farthest-corner distance and marks the leaves whose live boxes it may
+  /// cut (dirty, to be tightened again before the next draw).
   void add_sample(const Point<D>& p) {
-    const double reach = max_bound();
+    const double reach = this->reach();
     std::array<int, D> first, count;
     for (int i = 0; i < D; ++i) {
       const double x = (p[i] - domain_.lo[i]) / edge_[i] - 0.5;  // in units of leaves, from the first centre
-      double a = std::ceil(x - reach / edge_[i]), b = std::floor(x + reach / edge_[i]);
+      const double r = reach / edge_[i] + 0.5;                   // leaf centres within reach + half an edge
+      double a = std::ceil(x - r), b = std::floor(x + r);
       if (!std::isfinite(reach) || (domain_.periodic && b - a + 1 >= cells_[i])) {
         a = 0;
         b = cells_[i] - 1;
@@ -180,20 +286,23 @@ class LeafBounds {
     }
     std::array<int, D> offset{};
     while (true) {
-      std::size_t leaf = 0;
-      double far2 = 0.0;  // squared distance from p to the leaf's farthest point
+      double far2 = 0.0, near2 = 0.0;  // squared distance from p to the leaf's farthest and nearest points
       std::array<int, D> cell;
       for (int i = 0; i < D; ++i) {
         int c = first[i] + offset[i];
         cell[i] = c = ((c % cells_[i]) + cells_[i]) % cells_[i];
-        const double far = farthest(p[i], c, i);
+        const double a = domain_.lo[i] + c * edge_[i];
+        const double b = c + 1 == cells_[i] ? domain_.hi[i] : a + edge_[i];
+        const double far = farthest(p[i], a, b, i), near = nearest(p[i], a, b, i);
         far2 += far * far;
+        near2 += near * near;
       }
-      leaf = id(cell);
+      const std::size_t leaf = id(cell);
       const double bound = std::sqrt(far2) * (1.0 + 1e-12);
-      if (bound < tree_[size_ + leaf]) {
-        witness_[leaf] = p;
-        lower(leaf, bound);
+      if (bound < tree_[size_ + leaf]) set(leaf, bound);
+      if (count_[leaf] > 0 && !dirty_[leaf] && std::sqrt(near2) < live_max_[leaf]) {
+        dirty_[leaf] = 1;
+        dirty_list_.push_back(leaf);
       }
       int axis = 0;
       while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
@@ -201,111 +310,183 @@ class LeafBounds {
     }
   }
 
-  bool is_tight(std::size_t leaf) const { return tight_[leaf]; }
-  /// A sample near the leaf (NaN before any): no point c of the domain is
-  /// farther than distance(c, witness) from every sample, a cheap filter.
-  const Point<D>& witness(std::size_t leaf) const { return witness_[leaf]; }
+  /// Leaves marked by add_sample() since the last call (read once).
+  std::vector<std::size_t> take_dirty() {
+    std::vector<std::size_t> out;
+    out.swap(dirty_list_);
+    return out;
+  }
 
-  /// Replaces the leaf's bound by a nearly exact one: the largest distance
-  /// from a point of the leaf to the nearest of `near` (which must hold every
-  /// sample within bound + half diagonal of the leaf's centre), found by
-  /// branch and bound over sub-boxes down to 2^-kMaxTightenLevel of the
-  /// leaf's edge. The bound stays valid as samples are added; add_sample()
-  /// marks it loose.
-  /// Boxes whose bound is at most `floor` (the round's best distance, which
-  /// no distance will exceed later either) are not refined; a leaf whose
-  /// bound ends at the floor stays loose, to be refined again when the best
-  /// falls below it.
-  void tighten(std::size_t leaf, const PointSet<D>& near, double floor) {
-    if (near.empty()) return;
-    struct Box {
-      Point<D> lo;
-      int level;
-    };
-    double witness = 0.0, upper = 0.0;  // max f seen at a centre; max bound of undecided boxes
-    bool floored = false;
-    const double tolerance = 0.05 * *std::min_element(edge_.begin(), edge_.end());
-    const Point<D> leaf_lo = this->leaf_lo(leaf);
-    boxes_.clear();
-    boxes_.push_back(leaf_lo);
-    levels_.clear();
-    levels_.push_back(0);
-    while (!boxes_.empty()) {
-      const Point<D> lo = boxes_.back();
-      const int level = levels_.back();
-      boxes_.pop_back();
-      levels_.pop_back();
+  /// Re-makes the leaf against threshold theta: branch and bound over its
+  /// dyadic sub-boxes against `near` (the samples within near_radius(leaf) of
+  /// its centre; any subset keeps the bounds valid, this one makes them
+  /// tight). A box whose upper bound is <= theta joins the idle part; a box
+  /// that may hold points above theta is split while it may also hold points
+  /// below it, its volume exceeds split_above and the level is below
+  /// kMaxLevel; else it becomes a live box. Old live boxes die.
+  void tighten(std::size_t leaf, const PointSet<D>& near, double theta, double split_above) {
+    dirty_[leaf] = 0;
+    const double total = near_radius(leaf) - half_diagonal_;
+    live_boxes_ -= count_[leaf];
+    for (std::uint32_t k = first_[leaf]; k < first_[leaf] + count_[leaf]; ++k) arena_[k].leaf = kDead;
+    count_[leaf] = 0;
+    live_max_[leaf] = -kInf;
+    if (!(total > theta) || near.empty()) {
+      set(leaf, total);
+      return;
+    }
+    // The samples as seen from the leaf: on a torus each moved to its image
+    // nearest the leaf's centre. Distances to one image are upper bounds of
+    // the torus distance, so the upper bounds below stay valid; the lower
+    // bounds (only used to decide whether to split) may be loose.
+    const Point<D> middle = centre(leaf);
+    local_.resize(near.size());
+    for (std::size_t k = 0; k < near.size(); ++k)
+      for (int i = 0; i < D; ++i) local_[k][i] = middle[i] + domain_.delta(middle[i], near[k][i], i);
+    first_[leaf] = static_cast<std::uint32_t>(arena_.size());
+    double idle = -kInf;
+    stack_.clear();
+    stack_.push_back({leaf_lo(leaf), 0});
+    while (!stack_.empty()) {
+      const auto [lo, level] = stack_.back();
+      stack_.pop_back();
       const double scale = 1.0 / static_cast<double>(1 << level);
       Point<D> centre;
       for (int i = 0; i < D; ++i) centre[i] = lo[i] + 0.5 * edge_[i] * scale;
-      double bound2 = kInf, centre2 = kInf;
-      for (const auto& q : near) {
+      Point<D> hi;
+      for (int i = 0; i < D; ++i) hi[i] = std::min(lo[i] + edge_[i] * scale, domain_.hi[i]);
+      // The upper bound first: most boxes end idle on it alone.
+      double upper2 = kInf;
+      for (const auto& q : local_) {
         double far2 = 0.0;
         for (int i = 0; i < D; ++i) {
-          const double far = farthest(q[i], lo[i], std::min(lo[i] + edge_[i] * scale, domain_.hi[i]), i);
+          const double far = std::max(std::abs(q[i] - lo[i]), std::abs(q[i] - hi[i]));
           far2 += far * far;
         }
-        bound2 = std::min(bound2, far2);
-        const double d2 = domain_.distance2(centre, q);
-        if (level == 0 && d2 < centre2) witness_[leaf] = q;
-        centre2 = std::min(centre2, d2);
+        upper2 = std::min(upper2, far2);
       }
-      witness = std::max(witness, std::sqrt(centre2));
-      const double bound = std::sqrt(bound2) * (1.0 + 1e-12);
-      if (bound <= witness) continue;
-      if (bound <= floor) {
-        floored = true;
+      const double upper = std::sqrt(upper2) * (1.0 + 1e-12);
+      if (upper <= theta) {
+        idle = std::max(idle, upper);
         continue;
       }
-      if (level == kMaxTightenLevel || bound - witness < tolerance) {
-        upper = std::max(upper, bound);
+      double lower2 = kInf;
+      for (const auto& q : local_) {
+        double near2 = 0.0;
+        for (int i = 0; i < D; ++i) {
+          const double close = q[i] < lo[i] ? lo[i] - q[i] : q[i] > hi[i] ? q[i] - hi[i] : 0.0;
+          near2 += close * close;
+        }
+        lower2 = std::min(lower2, near2);
+      }
+      const double lower = std::sqrt(lower2) * (1.0 - 1e-12);
+      if (lower <= theta && level < kMaxLevel && volume_ * scale_volume(level) > split_above) {
+        for (int child = 0; child < (1 << D); ++child) {
+          Point<D> c = lo;
+          for (int i = 0; i < D; ++i)
+            if (child >> i & 1) c[i] += 0.5 * edge_[i] * scale;
+          stack_.push_back({c, level + 1});
+        }
         continue;
       }
-      for (int child = 0; child < (1 << D); ++child) {
-        Point<D> c = lo;
-        for (int i = 0; i < D; ++i)
-          if (child >> i & 1) c[i] += 0.5 * edge_[i] * scale;
-        boxes_.push_back(c);
-        levels_.push_back(level + 1);
+      double centre2 = kInf;
+      std::size_t witness = 0;
+      for (std::size_t k = 0; k < local_.size(); ++k) {
+        double d2 = 0.0;
+        for (int i = 0; i < D; ++i) d2 += (local_[k][i] - centre[i]) * (local_[k][i] - centre[i]);
+        if (d2 < centre2) {
+          centre2 = d2;
+          witness = k;
+        }
       }
+      arena_.push_back({lo, near[witness], upper, static_cast<std::uint32_t>(leaf), level});
+      lists_[level].push_back(static_cast<std::uint32_t>(arena_.size() - 1));
+      ++count_[leaf];
+      live_max_[leaf] = std::max(live_max_[leaf], upper);
+      live_max_all_ = std::max(live_max_all_, upper);
     }
-    double tight = std::max(witness * (1.0 + 1e-12), upper);
-    if (floored && floor > tight) tight = floor;
-    tight_[leaf] = !(floored && tight == floor);
-    if (tight < tree_[size_ + leaf]) set(leaf, tight);
+    live_boxes_ += count_[leaf];
+    set(leaf, idle);
   }
 
-  /// Calls visit(leaf) for leaves in decreasing order of bound (depth first,
-  /// larger child first) while their bound exceeds `best`, which visit may
-  /// raise.
+  /// Every sample within this distance of the leaf's centre must be passed
+  /// to tighten(): the nearest sample of any point of the leaf is among them.
+  double near_radius(std::size_t leaf) const { return std::max(tree_[size_ + leaf], live_max_[leaf]) + half_diagonal_; }
+
+  bool is_dirty(std::size_t leaf) const { return dirty_[leaf]; }
+
+  /// The live boxes of one size: arena indices (dead ones included; see live()).
+  const std::vector<std::uint32_t>& list(int level) const { return lists_[level]; }
+  const Box& box(std::uint32_t index) const { return arena_[index]; }
+  static bool live(const Box& b) { return b.leaf != kDead; }
+  static double scale_volume(int level) { return std::ldexp(1.0, -D * level); }
+
+  /// True if p (a point of the leaf) lies in one of the leaf's live boxes.
+  bool in_live_box(std::size_t leaf, const Point<D>& p) const {
+    for (std::uint32_t k = first_[leaf]; k < first_[leaf] + count_[leaf]; ++k) {
+      const Box& b = arena_[k];
+      const double scale = std::ldexp(1.0, -b.level);
+      bool inside = true;
+      for (int i = 0; i < D; ++i) inside &= p[i] >= b.lo[i] && p[i] < b.lo[i] + edge_[i] * scale;
+      if (inside) return true;
+    }
+    return false;
+  }
+
+  /// Drops the dead boxes once they outnumber the live ones; a leaf's live
+  /// boxes stay contiguous and every list keeps its order. (When this runs
+  /// depends only on the state, so the output stays a function of the seed.)
+  void compact() {
+    if (arena_.size() < 4096 || arena_.size() < 2 * live_boxes_) return;
+    std::vector<Box> kept;
+    kept.reserve(2 * live_boxes_ + 16);
+    std::vector<std::uint32_t> where(arena_.size(), UINT32_MAX);
+    live_max_all_ = -kInf;
+    for (std::uint32_t k = 0; k < arena_.size(); ++k) {
+      const Box& b = arena_[k];
+      if (!live(b)) continue;
+      if (k == first_[b.leaf]) first_[b.leaf] = static_cast<std::uint32_t>(kept.size());
+      where[k] = static_cast<std::uint32_t>(kept.size());
+      kept.push_back(b);
+      live_max_all_ = std::max(live_max_all_, b.bound);
+    }
+    for (auto& list : lists_) {
+      std::size_t out = 0;
+      for (const std::uint32_t k : list)
+        if (where[k] != UINT32_MAX) list[out++] = where[k];
+      list.resize(out);
+    }
+    arena_.swap(kept);
+  }
+
+  /// Calls visit(leaf) for leaves whose idle bound exceeds `t` (which visit
+  /// may raise), largest first (depth first, larger child first).
   template <class F>
-  void visit_above(const double& best, F&& visit) {
-    stack_.clear();
-    stack_.push_back(1);
-    while (!stack_.empty()) {
-      const std::size_t node = stack_.back();
-      stack_.pop_back();
-      if (!(tree_[node] > best)) continue;
+  void visit_idle_above(const double& t, F&& visit) {
+    walk_.clear();
+    walk_.push_back(1);
+    while (!walk_.empty()) {
+      const std::size_t node = walk_.back();
+      walk_.pop_back();
+      if (!(tree_[node] > t)) continue;
       if (node >= size_) {
         visit(node - size_);
         continue;
       }
       const std::size_t a = 2 * node, b = a + 1;
       if (tree_[a] >= tree_[b]) {
-        stack_.push_back(b);
-        stack_.push_back(a);
+        walk_.push_back(b);
+        walk_.push_back(a);
       } else {
-        stack_.push_back(a);
-        stack_.push_back(b);
+        walk_.push_back(a);
+        walk_.push_back(b);
       }
     }
   }
 
  private:
-  void lower(std::size_t leaf, double value) {
-    tight_[leaf] = 0;
-    set(leaf, value);
-  }
+  // Expected candidates a round below which a box that straddles the
+  // threshold is not split further: few candidates are wasted on it.
 
   void set(std::size_t leaf, double value) {
     std::size_t node = size_ + leaf;
@@ -318,9 +499,8 @@ class LeafBounds {
   }
 
   // Leaf ids go tile by tile (kTile^D leaves a tile, row-major inside), so
-  // that a subtree of the max tree is a compact block of space and the leaves
-  // near one gap share their ancestors. Slots of partial tiles beyond the
-  // domain hold -inf and are never visited.
+  // that a subtree of the max tree is a compact block of space. Slots of
+  // partial tiles beyond the domain hold -inf and are never visited.
   std::size_t id(const std::array<int, D>& c) const {
     std::size_t tile = 0, inner = 0, scale = 1;
     for (int i = 0; i < D; ++i) {
@@ -343,15 +523,8 @@ class LeafBounds {
     return c;
   }
 
-  // The largest distance along one axis from x to a point of leaf column c
-  // (on a torus, to the nearest image: at most half the period).
-  double farthest(double x, int c, int axis) const {
-    const double a = domain_.lo[axis] + c * edge_[axis];
-    const double b = c + 1 == cells_[axis] ? domain_.hi[axis] : a + edge_[axis];
-    return farthest(x, a, b, axis);
-  }
-
-  // The same for the interval [a, b] inside the domain.
+  // The largest distance along one axis from x to a point of [a, b] (on a
+  // torus, to the nearest image: at most half the period).
   double farthest(double x, double a, double b, int axis) const {
     if (!domain_.periodic) return std::max(std::abs(x - a), std::abs(b - x));
     const double L = domain_.extent(axis);
@@ -361,21 +534,40 @@ class LeafBounds {
     return std::max(std::abs(domain_.delta(x, a, axis)), std::abs(domain_.delta(x, b, axis)));
   }
 
+  // The smallest distance along one axis from x to a point of [a, b] (x and
+  // the interval inside the domain; on a torus an outside point's nearest
+  // point of the interval is an end).
+  double nearest(double x, double a, double b, int axis) const {
+    if (x >= a && x <= b) return 0.0;
+    if (!domain_.periodic) return x < a ? a - x : x - b;
+    return std::min(std::abs(domain_.delta(x, a, axis)), std::abs(domain_.delta(x, b, axis)));
+  }
+
+  struct Pending {
+    Point<D> lo;
+    int level;
+  };
+
   Domain<D> domain_;
   std::array<int, D> cells_{};
   std::array<double, D> edge_{};
   std::array<int, D> tiles_{};
   std::array<std::size_t, D> tile_stride_{};
   std::size_t leaves_ = 0, size_ = 0;
+  double volume_ = 0.0, half_diagonal_ = 0.0;
   static constexpr int kTile = D == 2 ? 8 : 4;
-  static constexpr std::size_t kTileSlots = D == 2 ? 64 : 64;
-  std::vector<double> tree_;
-  std::vector<std::size_t> stack_;
-  std::vector<char> tight_;
-  PointSet<D> witness_;
-  PointSet<D> boxes_;
-  std::vector<int> levels_;
-  static constexpr int kMaxTightenLevel = D == 2 ? 4 : 3;
+  static constexpr std::size_t kTileSlots = 64;
+  std::vector<double> tree_;  // idle bounds (leaves at size_ + leaf), max tree
+  std::vector<std::uint32_t> first_, count_;
+  std::vector<double> live_max_;
+  std::vector<char> dirty_;
+  std::vector<std::size_t> dirty_list_, walk_;
+  std::vector<Box> arena_;
+  std::array<std::vector<std::uint32_t>, kMaxLevel + 1> lists_;
+  std::size_t live_boxes_ = 0;
+  double live_max_all_ = -kInf;
+  std::vector<Pending> stack_;
+  PointSet<D> local_;
 };
 
 // Exact distances to the nearest sample, on a grid of about one sample a cell
@@ -391,7 +583,8 @@ class NearestSample {
   void add(const Point<D>& p, const PointSet<D>& all) {
     if (all.size() >= 2 * built_) {
       built_ = all.size();
-      grid_ = Grid<D>(domain_, std::pow(domain_.volume() / static_cast<double>(built_), 1.0 / D));
+      spacing_ = std::pow(domain_.volume() / static_cast<double>(built_), 1.0 / D);
+      grid_ = Grid<D>(domain_, spacing_);
       for (const auto& q : all) grid_.insert(q);
     } else {
       grid_.insert(p);
@@ -405,6 +598,18 @@ class NearestSample {
       out.push_back(grid_.points()[static_cast<std::size_t>(index)]);
       return true;
     });
+  }
+
+  /// The squared distance from p to the nearest sample (searching ever wider).
+  double nearest2(const Point<D>& p) const {
+    for (double r = spacing_;; r *= 2.0) {
+      double d2 = kInf;
+      grid_.for_each_within(p, std::min(r, diameter_), [&](std::int32_t, double e2) {
+        d2 = std::min(d2, e2);
+        return true;
+      });
+      if (d2 <= r * r || r >= diameter_) return d2;
+    }
   }
 
   /// The squared distance from p to the nearest sample if it exceeds beat2,
@@ -430,7 +635,7 @@ class NearestSample {
   Domain<D> domain_;
   Grid<D> grid_;
   std::size_t built_ = 0;
-  double diameter_ = 0.0;
+  double diameter_ = 0.0, spacing_ = 0.0;
 };
 
 template <int D>
@@ -451,14 +656,22 @@ template <int D>
 BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, const Domain<D>& domain,
                                           std::uint64_t seed) {
   validate(params, domain);
-  // Expected final size: the count, or what a radius leaves (relative radius
-  // about 0.75, i.e. ~0.6 of the packing bound).
+  // The leaves, up to kLeavesPerSample for each of the final samples (a
+  // radius alone leaves about 0.6 of the packing bound): refuse at once what
+  // would exceed the cell budget later.
   const double expected =
       params.count ? static_cast<double>(*params.count) : 0.6 * packing_count(domain.volume(), *params.radius, D);
-  LeafBounds<D> leaves(domain, std::max(1.0, expected) * kLeavesPerSample<D>);
+  if (expected * kLeavesPerSample < D >> static_cast<double>(kMaxGridCells))
+    throw InvalidArgument("best-candidate: the request needs more than " + std::to_string(kMaxGridCells) +
+                          " leaf cells (" + format(expected) + " samples)");
   NearestSample<D> nearest(domain);
+  std::optional<GapBoxes<D>> boxes;
+  std::uint64_t rebuild_at = 0;
   const std::uint64_t wanted = params.count.value_or(UINT64_MAX);
   const double radius = params.radius.value_or(0.0);
+  // typical: a running mean of best x sqrt(i), which varies slowly (the
+  // best itself shrinks like 1/sqrt(i) and jitters by a few per cent).
+  double typical = -1.0, theta = kInf;
 
   BestCandidateResult<D> result;
   PointSet<D> near;
@@ -466,7 +679,10 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
     result.points.push_back(p);
     result.distance.push_back(distance);
     nearest.add(p, result.points);
-    leaves.add_sample(p);
+    if (boxes) {
+      boxes->add_sample(p);
+      boxes->compact();
+    }
   };
   {
     Rng rng(seed, {0});
@@ -487,45 +703,87 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
     };
     if (candidates < kBestCandidateExactBelow) {
       Rng rng(seed, {i});
-      for (std::uint64_t t = 0; t < candidates; ++t) consider(uniform_point(rng, domain), leaves.max_bound());
+      for (std::uint64_t t = 0; t < candidates; ++t) consider(uniform_point(rng, domain), kInf);
     } else {
-      const double lambda = static_cast<double>(candidates) / static_cast<double>(leaves.leaves());
-      const double p0 = exp_neg(lambda);
+      if (!boxes || i >= rebuild_at) {
+        // Leaves for twice the samples so far (at most the count): their size
+        // follows the density.
+        double target = 2.0 * static_cast<double>(i);
+        rebuild_at = 2 * i;
+        if (params.count && target >= static_cast<double>(*params.count)) {
+          target = static_cast<double>(*params.count);
+          rebuild_at = UINT64_MAX;
+        }
+        boxes.emplace(domain, target * kLeavesPerSample<D>);
+        theta = kInf;
+        boxes->start([&](const Point<D>& p) { return nearest.nearest2(p); },
+                     [&](const Point<D>& p, double r, PointSet<D>& out) { nearest.gather(p, r, out); });
+      }
+      const double lambda = static_cast<double>(candidates) / domain.volume();  // candidates per unit volume
+      theta = std::min(theta, (1.0 - kThresholdShare) * typical / std::sqrt(static_cast<double>(i)));
+      // Every leaf whose idle part may reach above theta is tightened (against
+      // a slightly lower threshold), as are the leaves whose live boxes the
+      // last sample cut; then no idle point is farther than theta.
+      const double shrink = std::cbrt(1000.0 / static_cast<double>(i));
+      const double margin = std::clamp(kTightenMargin * shrink, kMarginMin, kTightenMargin);
+      const double split_above = std::max(kSplitBelow * shrink * shrink, kSplitMin) / lambda;
+      auto tighten = [&](std::size_t leaf) {
+        nearest.gather(boxes->centre(leaf), boxes->near_radius(leaf), near);
+        boxes->tighten(leaf, near, theta * (1.0 - margin), split_above);
+      };
+      for (const std::size_t leaf : boxes->take_dirty())
+        if (boxes->is_dirty(leaf)) tighten(leaf);
+      boxes->visit_idle_above(theta, tighten);
+
       for (std::uint64_t attempt = 0; best2 < 0.0; ++attempt) {
         // No candidate at all has probability e^-(m*i) < e^-256; bounded anyway.
         if (attempt == 16) throw Failure("best-candidate: no candidate was drawn in 16 rounds");
-        const std::uint64_t round_key = mix64(mix64(seed ^ 0x6265737463616e64ULL) + mix64(i) + attempt);
-        leaves.visit_above(best, [&](std::size_t leaf) {
-          if (!leaves.is_tight(leaf)) {
-            Point<D> centre = leaves.leaf_lo(leaf);
-            double half2 = 0.0;
-            for (int k = 0; k < D; ++k) {
-              centre[k] += 0.5 * leaves.edge()[k];
-              half2 += 0.25 * leaves.edge()[k] * leaves.edge()[k];
-            }
-            nearest.gather(centre, leaves.bound(leaf) + std::sqrt(half2) * (1.0 + 1e-9), near);
-            leaves.tighten(leaf, near, std::max(best, 0.0));
-            if (!(leaves.bound(leaf) > best)) return;
+        // The live boxes: one Poisson count per size, each candidate in a
+        // uniformly chosen entry of that size's list. Entries of dead boxes
+        // are skipped: that thins each live box's count to exactly
+        // Poisson(lambda x its volume), independent of the other boxes.
+        Rng rng(seed, {i, attempt + 1});
+        for (int level = 0; level <= GapBoxes<D>::kMaxLevel; ++level) {
+          const auto& list = boxes->list(level);
+          if (list.empty()) continue;
+          const double scale = std::ldexp(1.0, -level);
+          const double mean =
+              lambda * boxes->leaf_volume() * GapBoxes<D>::scale_volume(level) * static_cast<double>(list.size());
+          const std::uint64_t n = poisson(mean, rng);
+          for (std::uint64_t t = 0; t < n; ++t) {
+            const auto& box = boxes->box(list[rng.below(list.size())]);
+            if (!boxes->live(box)) continue;
+            const Point<D> c = boxes->uniform_in(box.lo, scale, rng);
+            if (domain.distance2(c, box.witness) <= best2) continue;
+            consider(c, box.bound);
           }
-          // Most leaves draw no candidate: decide that from one hash before
-          // setting up the leaf's generator.
+        }
+        if (best > boxes->max_idle_bound()) break;
+        // Rarely the best of the live boxes is not above every idle bound:
+        // then the idle parts may hold the winner. Each leaf whose idle bound exceeds the
+        // best so far draws its own Poisson count (from a hash of round and
+        // leaf) over the whole leaf and drops the candidates inside its live
+        // boxes, which were drawn above.
+        const std::uint64_t round_key = mix64(mix64(seed ^ 0x6265737463616e64ULL) + mix64(i) + attempt);
+        const double leaf_mean = lambda * boxes->leaf_volume();
+        const double p0 = exp_neg(leaf_mean);
+        boxes->visit_idle_above(best, [&](std::size_t leaf) {
+          // Most leaves draw no candidate: decide that from one hash.
           const std::uint64_t key = mix64(round_key ^ mix64(leaf + 0x632be59bd9b4e019ULL));
           const double u = static_cast<double>(key >> 11) * 0x1.0p-53;
           if (u < p0) return;
-          const std::uint64_t n = poisson_above_zero(u, lambda, p0);
-          Rng rng(key);
-          const Point<D> lo = leaves.leaf_lo(leaf);
+          const std::uint64_t n = poisson_above_zero(u, leaf_mean, p0);
+          Rng leaf_rng(key);
+          const Point<D> lo = boxes->leaf_lo(leaf);
           for (std::uint64_t t = 0; t < n; ++t) {
-            Point<D> c;
-            for (int k = 0; k < D; ++k)
-              c[k] = std::min(lo[k] + rng.uniform() * leaves.edge()[k], std::nextafter(domain.hi[k], domain.lo[k]));
-            // A NaN witness compares false: no filter.
-            if (domain.distance2(c, leaves.witness(leaf)) <= best2) continue;
-            consider(c, leaves.bound(leaf));
+            const Point<D> c = boxes->uniform_in(lo, 1.0, leaf_rng);
+            if (!boxes->in_live_box(leaf, c)) consider(c, boxes->idle_bound(leaf));
           }
         });
       }
     }
+    const double scaled = best * std::sqrt(static_cast<double>(i));
+    typical = typical < 0.0 ? scaled : typical + kTypicalWeight * (scaled - typical);
     if (best < radius) {
       if (!params.count) break;
       throw InvalidArgument("best-candidate: placed only " + std::to_string(i) + " of the " + std::to_string(wanted) +
