@@ -328,9 +328,9 @@ class EbeidaSampler {
       const bool blocked = any_neighbour(near_, c, open.cell, [&](std::size_t n) {
         std::int32_t s = state_[n];
         if (s <= kOpen) {
-          const auto slot = static_cast<std::uint32_t>(kOpen - s);
-          if (!(open_[slot].next_time < time)) return false;
-          settle(slot, time, depth + 1);
+          const auto neighbour = static_cast<std::uint32_t>(kOpen - s);
+          if (!(open_[neighbour].next_time < time)) return false;
+          settle(neighbour, time, depth + 1);
           s = state_[n];
         }
         if (s >= 0 && domain_.distance2(x, samples_[static_cast<std::size_t>(s)]) < r2_) {
