@@ -172,25 +172,15 @@ TEST(DunbarHumphreysGlobalSectors, SameSeedSamePointsOtherSeedOtherPoints) {
 TEST(DunbarHumphreysGlobalSectors, MatchesMaximalDartThrowing) {
   const double r = 0.02;
   const auto domain = Domain<2>::unit(true);
-  std::vector<double> n_sectors, n_dart, nn_sectors, nn_dart, near_sectors, near_dart;
-  std::vector<std::vector<double>> spectra_sectors, spectra_dart;
+  testing_stats::Realisations sectors, dart;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    const auto s = dunbar_humphreys(global_sectors(r), domain, seed);
-    const auto j = jones({r}, domain, 100 + seed);
-    n_sectors.push_back(double(s.size()));
-    n_dart.push_back(double(j.size()));
-    const auto ss = testing_stats::summarize(s, domain, r), js = testing_stats::summarize(j, domain, r);
-    nn_sectors.push_back(ss.mean_over_r);
-    nn_dart.push_back(js.mean_over_r);
-    near_sectors.push_back(ss.fraction_near);
-    near_dart.push_back(js.fraction_near);
-    spectra_sectors.push_back(testing_stats::radial_power(s, domain, 48));
-    spectra_dart.push_back(testing_stats::radial_power(j, domain, 48));
+    sectors.add(dunbar_humphreys(global_sectors(r), domain, seed), domain, r, true);
+    dart.add(jones({r}, domain, 100 + seed), domain, r, true);
   }
-  EXPECT_LT(std::abs(testing_stats::welch_t(n_sectors, n_dart)), testing_stats::kMaxT);
-  EXPECT_LT(std::abs(testing_stats::welch_t(nn_sectors, nn_dart)), testing_stats::kMaxT);
-  EXPECT_LT(std::abs(testing_stats::welch_t(near_sectors, near_dart)), testing_stats::kMaxT);
-  EXPECT_LT(testing_stats::max_spectrum_t(spectra_sectors, spectra_dart), testing_stats::kMaxSpectrumT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(sectors.count, dart.count)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(sectors.mean_over_r, dart.mean_over_r)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(sectors.fraction_near, dart.fraction_near)), testing_stats::kMaxT);
+  EXPECT_LT(testing_stats::max_spectrum_t(sectors.spectrum, dart.spectrum), testing_stats::kMaxSpectrumT);
 }
 
 }  // namespace

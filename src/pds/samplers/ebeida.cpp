@@ -345,8 +345,9 @@ class EbeidaSampler {
         open.next_time = kInf;
         return;
       }
-      // A blocker that covers the whole cell blocks every later dart too.
-      if (level_ == 0 && covers_cell(samples_[static_cast<std::size_t>(blocker)], c)) {
+      // A blocker that covers the whole cell blocks every later dart too (at
+      // level 0 the dart's box is the cell).
+      if (level_ == 0 && covers_box(samples_[static_cast<std::size_t>(blocker)], lo, edge)) {
         state_[open.cell] = kCovered;
         open.next_time = kInf;
         return;
@@ -364,16 +365,6 @@ class EbeidaSampler {
       far2 += std::max(near_face * near_face, far_face * far_face);
     }
     return far2 < cover2_;
-  }
-
-  bool covers_cell(const Point<D>& s, const std::array<int, D>& c) const {
-    Point<D> lo;
-    std::array<double, D> edge;
-    for (int a = 0; a < D; ++a) {
-      lo[a] = corners_[a][static_cast<std::size_t>(c[a])];
-      edge[a] = corners_[a][static_cast<std::size_t>(c[a]) + 1] - lo[a];
-    }
-    return covers_box(s, lo, edge);
   }
 
   /// Renumbers the samples in cell order: the samples near a cell are then

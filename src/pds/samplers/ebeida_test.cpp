@@ -68,25 +68,15 @@ TEST(Ebeida, SmallDomains) {
 TEST(Ebeida, MatchesMaximalDartThrowing) {
   const double r = 0.02;
   const auto domain = Domain<2>::unit(true);
-  std::vector<double> en, em, ef, jn, jm, jf;
-  std::vector<std::vector<double>> ebeida_spectra, jones_spectra;
+  testing_stats::Realisations e, j;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    const auto e = ebeida<2>({r}, domain, seed);
-    const auto j = jones({r}, domain, 100 + seed);
-    const auto es = testing_stats::summarize(e, domain, r), js = testing_stats::summarize(j, domain, r);
-    en.push_back(double(e.size()));
-    jn.push_back(double(j.size()));
-    em.push_back(es.mean_over_r);
-    jm.push_back(js.mean_over_r);
-    ef.push_back(es.fraction_near);
-    jf.push_back(js.fraction_near);
-    ebeida_spectra.push_back(testing_stats::radial_power(e, domain, 48));
-    jones_spectra.push_back(testing_stats::radial_power(j, domain, 48));
+    e.add(ebeida<2>({r}, domain, seed), domain, r, true);
+    j.add(jones({r}, domain, 100 + seed), domain, r, true);
   }
-  EXPECT_LT(std::abs(testing_stats::welch_t(en, jn)), testing_stats::kMaxT);
-  EXPECT_LT(std::abs(testing_stats::welch_t(em, jm)), testing_stats::kMaxT);
-  EXPECT_LT(std::abs(testing_stats::welch_t(ef, jf)), testing_stats::kMaxT);
-  EXPECT_LT(testing_stats::max_spectrum_t(ebeida_spectra, jones_spectra, 47), testing_stats::kMaxSpectrumT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(e.count, j.count)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(e.mean_over_r, j.mean_over_r)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(e.fraction_near, j.fraction_near)), testing_stats::kMaxT);
+  EXPECT_LT(testing_stats::max_spectrum_t(e.spectrum, j.spectrum, 47), testing_stats::kMaxSpectrumT);
 }
 
 TEST(Ebeida, RejectsBadInput) {
