@@ -41,9 +41,14 @@
 // Front samples are taken in insertion order (breadth first, which keeps
 // memory access local; the guarantees do not depend on the order). A front
 // sample's available arcs are computed from the samples within 2r (a sample at
-// distance d blocks the arc of half-angle acos(d / 2r) around its direction);
-// then points are drawn uniformly on the remaining arcs, each new sample blocking +-60 degrees around itself, until no
-// arc remains. The new samples join the front; the sample leaves it.
+// distance d blocks the directions within acos(d / 2r) of its own); then
+// points are drawn uniformly in angle on the remaining arcs, each new sample
+// blocking +-60 degrees around itself, until no arc remains. The new samples
+// join the front; the sample leaves it. Directions are handled without
+// trigonometry (detail/diamond_arcs.h): an arc's ends are the neighbour's
+// direction rotated by -+acos(d / 2r), which needs one square root, and they
+// are ordered by their "diamond angle", which needs one division; a uniform
+// true angle is drawn by rejection (tested there).
 //
 // Guarantees. Every new sample is at distance >= r from every other (checked
 // on the stored coordinates before it is accepted). Maximal: if some region
@@ -53,11 +58,9 @@
 // closer than r; hence every point is within r(1 + 1e-10) of a sample.
 //
 // Complexity. Each sample is processed once with a constant number of
-// neighbours: O(N) time. Memory: the output, one int32 per grid cell (about
-// 2.4 per sample) and each sample's parent and angle (12 bytes); the front is
-// the unprocessed tail of the output. The arcs blocked by a sample's parent
-// and siblings follow from their angles on the parent's circle, which saves
-// the atan2 and acos for those neighbours.
+// neighbours (7.6 within 2r on average): O(N) time. Memory: the output and
+// one int32 per grid cell (about 2.6 per sample); the front is the
+// unprocessed tail of the output.
 //
 // Complexity of variant 1: each sample is processed once against the about
 // 20 samples within 3r, each cut touching a bounded number of sectors: O(N),
@@ -74,9 +77,12 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
+#include "pds/detail/diamond_arcs.h"
 #include "pds/detail/sum_tree.h"
 #include "pds/error.h"
 #include "pds/rng.h"
@@ -86,85 +92,6 @@ namespace pds {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-/// The free part of a circle: disjoint angular intervals in [0, 2 pi).
-class Arcs {
- public:
-  void reset() {
-    arcs_.clear();
-    arcs_.push_back({0.0, kTwoPi});
-  }
-  bool empty() const { return arcs_.empty(); }
-
-  /// Removes the open interval (lo, hi), hi - lo < 2 pi, lo in [-2 pi, 2 pi).
-  void remove(double lo, double hi) {
-    if (hi <= 0.0) {
-      lo += kTwoPi;
-      hi += kTwoPi;
-    } else if (lo >= kTwoPi) {
-      lo -= kTwoPi;
-      hi -= kTwoPi;
-    }
-    if (lo < 0.0) {
-      remove_normalized(lo + kTwoPi, kTwoPi);
-      remove_normalized(0.0, hi);
-    } else if (hi > kTwoPi) {
-      remove_normalized(lo, kTwoPi);
-      remove_normalized(0.0, hi - kTwoPi);
-    } else {
-      remove_normalized(lo, hi);
-    }
-  }
-
-  /// An angle uniformly distributed over the free arcs; requires !empty().
-  double sample(Rng& rng) const {
-    double total = 0.0;
-    for (const Arc& a : arcs_) total += a.hi - a.lo;
-    double u = rng.uniform() * total;
-    for (const Arc& a : arcs_) {
-      const double len = a.hi - a.lo;
-      if (u < len) return a.lo + u;
-      u -= len;
-    }
-    return arcs_.back().hi - 0.5 * (arcs_.back().hi - arcs_.back().lo);
-  }
-
- private:
-  // Arcs shorter than this are dropped: the gap they leave between disks is
-  // narrower than 1e-13 radius.
-  static constexpr double kMinArc = 1e-13;
-  struct Arc {
-    double lo, hi;
-  };
-
-  void remove_normalized(double lo, double hi) {
-    std::size_t out = 0;
-    const std::size_t n = arcs_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Arc a = arcs_[i];
-      if (hi <= a.lo || lo >= a.hi) {
-        arcs_[out++] = a;
-        continue;
-      }
-      const bool left = lo - a.lo > kMinArc, right = a.hi - hi > kMinArc;
-      if (left && right) {
-        // Split: the right piece goes to the end (order does not matter for
-        // sampling, only the multiset of arcs, which is deterministic).
-        arcs_[out++] = {a.lo, lo};
-        arcs_.push_back({hi, a.hi});
-      } else if (left) {
-        arcs_[out++] = {a.lo, lo};
-      } else if (right) {
-        arcs_[out++] = {hi, a.hi};
-      }
-    }
-    // Arcs appended by splits sit after n; move them down.
-    for (std::size_t i = n; i < arcs_.size(); ++i) arcs_[out++] = arcs_[i];
-    arcs_.resize(out);
-  }
-
-  std::vector<Arc> arcs_;
-};
 
 /// One sample index per cell (or -1). Cells have edge <= r / sqrt(2), so a
 /// set with minimum distance r has at most one sample per cell; a flat int32
@@ -197,8 +124,62 @@ class CellGrid {
   /// Calls f(index) for every stored sample in the cells within `reach`
   /// cells of p's cell (each cell once, wrapping on a torus).
   template <class F>
-  void for_each_near(const Point<2>& p, int reach, F&& f) {
+  void for_each_near(const Point<2>& p, int reach, F&& f) const {
     int first[2], last[2];
+    window(p, reach, first, last);
+    for (int y = first[1]; y <= last[1]; ++y) {
+      const std::int32_t* row = this->row(y);
+      for (int x = first[0]; x <= last[0]; ++x) {
+        const std::int32_t j = row[wrapped(x, 0)];
+        if (j >= 0) f(j);
+      }
+    }
+  }
+
+  /// The same samples written to `out` (room for (2 reach + 1)^2), their
+  /// number returned: no branch per cell, for the hot loop of variant 0.
+  /// `seam` tells whether the window crossed a torus seam.
+  int collect_near(const Point<2>& p, int reach, std::int32_t* out, bool& seam) const {
+    int first[2], last[2];
+    window(p, reach, first, last);
+    seam = first[0] < 0 || first[1] < 0 || last[0] >= n_[0] || last[1] >= n_[1];
+    const int width = last[0] - first[0] + 1;
+    if (width > kMaxWindow) throw std::logic_error("dunbar-humphreys: neighbour window wider than planned");
+    int n = 0;
+    if (width == 7 && first[0] >= 0 && last[0] < n_[0]) {  // the usual case: no column wraps, 7 wide
+      for (int y = first[1]; y <= last[1]; ++y) {
+        const std::int32_t* row = this->row(y) + first[0];
+        for (int x = 0; x < 7; ++x) {
+          const std::int32_t j = row[x];
+          out[n] = j;
+          n += j >= 0;
+        }
+      }
+      return n;
+    }
+    int columns[kMaxWindow];
+    for (int x = 0; x < width; ++x) columns[x] = wrapped(first[0] + x, 0);
+    for (int y = first[1]; y <= last[1]; ++y) {
+      const std::int32_t* row = this->row(y);
+      for (int x = 0; x < width; ++x) {
+        const std::int32_t j = row[columns[x]];
+        out[n] = j;
+        n += j >= 0;
+      }
+    }
+    return n;
+  }
+
+ private:
+  // collect_near's window width: 2 radius is 2.83 cells of radius / sqrt 2,
+  // up to 3.33 where rounding the cell count up shrinks the cells (a torus
+  // period of 4 radius), so the reach is at most 4; a box that narrow has
+  // fewer cells than that across.
+  static constexpr int kMaxWindow = 9;
+
+  /// The cell range [first, last] per axis within `reach` of p's cell:
+  /// clipped in a box, possibly past the ends (to be wrapped) on a torus.
+  void window(const Point<2>& p, int reach, int first[2], int last[2]) const {
     for (int i = 0; i < 2; ++i) {
       const int c = coord(p[i], i);
       first[i] = c - reach;
@@ -213,17 +194,10 @@ class CellGrid {
         last[i] = std::min(last[i], n_[i] - 1);
       }
     }
-    for (int y = first[1]; y <= last[1]; ++y) {
-      const int cy = y < 0 ? y + n_[1] : (y >= n_[1] ? y - n_[1] : y);
-      const std::int32_t* row = cells_.data() + static_cast<std::size_t>(cy) * n_[0];
-      for (int x = first[0]; x <= last[0]; ++x) {
-        const int cx = x < 0 ? x + n_[0] : (x >= n_[0] ? x - n_[0] : x);
-        if (row[cx] >= 0) f(row[cx]);
-      }
-    }
   }
+  int wrapped(int c, int axis) const { return c < 0 ? c + n_[axis] : (c >= n_[axis] ? c - n_[axis] : c); }
+  const std::int32_t* row(int y) const { return cells_.data() + static_cast<std::size_t>(wrapped(y, 1)) * n_[0]; }
 
- private:
   Domain<2> domain_;
   int n_[2];
   double inv_edge_[2];
@@ -238,6 +212,126 @@ std::int32_t append_sample(PointSet<2>& points, CellGrid& grid, const Point<2>& 
   points.push_back(q);
   grid.at(q) = index;
   return index;
+}
+
+// ---------------------------------------------------------------------------
+// Variant 0: boundary sampling.
+// ---------------------------------------------------------------------------
+
+PointSet<2> boundary_sampling(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed) {
+  const double r = params.radius, r2 = r * r;
+  // The circle radius: a hair above r, so that samples placed on it stay at
+  // least r apart after rounding (see the file comment).
+  const double rc = r * (1.0 + 1e-10);
+  if (domain.periodic)
+    for (int i = 0; i < 2; ++i)
+      if (domain.extent(i) < 4.0 * rc)  // neighbours within 2 rc need one nearest image
+        throw InvalidArgument(
+            "dunbar-humphreys: on a torus every period must be more than 4 radius (the circles are 1e-10 larger than "
+            "the radius); axis " +
+            std::to_string(i) + " has " + std::to_string(domain.extent(i)) + " for radius " + std::to_string(r));
+
+  CellGrid grid(domain, r / std::sqrt(2.0));
+  const int reach = grid.reach(2.0 * rc);  // cells that may hold a sample within 2 rc
+  PointSet<2> points;
+  // Boundary sampling makes about 0.875 samples per r^2 (rho ~ 0.87); reserving
+  // that avoids the doubling that would otherwise set the peak memory.
+  points.reserve(static_cast<std::size_t>(0.9 * domain.volume() / r2) + 16);
+  Rng rng(seed);
+  append_sample(points, grid, uniform_point(rng, domain));
+
+  const double reach2 = 4.0 * rc * rc;
+  const double sin60 = std::sqrt(3.0) / 2.0;
+  detail::FreeArcs arcs;
+  std::vector<std::int32_t> cells(static_cast<std::size_t>((2 * reach + 1) * (2 * reach + 1)));
+  detail::DiamondArc blocked[detail::FreeArcs::kMaxBlocked];
+  // Samples within 2 rc, then the new ones (at most 6); one spare slot for
+  // the branch-free filling.
+  std::int32_t near[detail::FreeArcs::kMaxBlocked + 8];
+  // The front is every sample not yet processed, in insertion order (breadth
+  // first), which keeps the grid rows and points being touched in cache.
+  for (std::size_t head = 0; head < points.size(); ++head) {
+    const auto pi = static_cast<std::int32_t>(head);
+    const Point<2> p = points[head];
+    int nblocked = 0, nnear = 0;
+    if (!domain.periodic) {
+      // A wall at distance w < rc blocks the directions whose component
+      // towards it exceeds w / rc: from (-w, h) to (-w, -h) for the low x wall, etc.
+      for (int axis = 0; axis < 2; ++axis) {
+        const double to_lo = p[axis] - domain.lo[axis], to_hi = domain.hi[axis] - p[axis];
+        if (to_lo < rc) {
+          const double h = std::sqrt(rc * rc - to_lo * to_lo);
+          blocked[nblocked++] =
+              axis == 0 ? detail::diamond_arc(-to_lo, h, -to_lo, -h) : detail::diamond_arc(-h, -to_lo, h, -to_lo);
+        }
+        if (to_hi < rc) {
+          const double h = std::sqrt(rc * rc - to_hi * to_hi);
+          blocked[nblocked++] =
+              axis == 0 ? detail::diamond_arc(to_hi, -h, to_hi, h) : detail::diamond_arc(h, to_hi, -h, to_hi);
+        }
+      }
+    }
+    bool seam = false;
+    const int ncells = grid.collect_near(p, reach, cells.data(), seam);
+    // The neighbours within 2 rc (kept without a branch, so that the
+    // divisions below overlap), then the arcs they block. Only a window across
+    // a torus seam needs the nearest image.
+    double ndx[detail::FreeArcs::kMaxBlocked], ndy[detail::FreeArcs::kMaxBlocked], nd2[detail::FreeArcs::kMaxBlocked];
+    const auto scan = [&](auto across_seam) {
+      for (int c = 0; c < ncells; ++c) {
+        const std::int32_t j = cells[static_cast<std::size_t>(c)];
+        const Point<2>& s = points[static_cast<std::size_t>(j)];
+        double dx = s[0] - p[0], dy = s[1] - p[1];
+        if constexpr (across_seam) dx = domain.delta(p[0], s[0], 0), dy = domain.delta(p[1], s[1], 1);
+        const double d2 = dx * dx + dy * dy;
+        near[nnear] = j;
+        ndx[nnear] = dx;
+        ndy[nnear] = dy;
+        nd2[nnear] = d2;
+        nnear += (d2 < reach2) & (j != pi);
+      }
+    };
+    if (seam)
+      scan(std::true_type{});
+    else
+      scan(std::false_type{});
+    for (int i = 0; i < nnear; ++i) {
+      // The sample blocks the directions within acos(d / 2rc) of its own:
+      // rotating (dx, dy) by -+ that angle gives (dx +- dy k, dy -+ dx k) up to
+      // scale, with k = tan = sqrt((2rc)^2 - d^2) / d.
+      const double dx = ndx[i], dy = ndy[i];
+      const double k = std::sqrt((reach2 - nd2[i]) / nd2[i]);
+      blocked[nblocked++] = detail::diamond_arc(dx + dy * k, dy - dx * k, dx - dy * k, dy + dx * k);
+    }
+    arcs.assign_complement(blocked, nblocked);
+
+    int rejected = 0;
+    while (!arcs.empty()) {
+      const double t = arcs.sample(rng);  // uniform in true angle over the free arcs
+      const auto [vx, vy] = detail::diamond_direction(t);
+      const double scale = rc / std::sqrt(vx * vx + vy * vy);
+      const Point<2> q = domain.wrap(Point<2>{{p[0] + vx * scale, p[1] + vy * scale}});
+      bool fits = domain.contains(q) && domain.distance2(p, q) >= r2;
+      for (int i = 0; fits && i < nnear; ++i)
+        fits = domain.distance2(q, points[static_cast<std::size_t>(near[i])]) >= r2;
+      if (!fits) {
+        // Only rounding at an arc's end or at a wall gets here: drop a sliver
+        // around t, wider each time (at most 2e-6, and a dropped arc of width w
+        // leaves a hole of depth about w^2 r / 8). Bounded per front sample.
+        if (++rejected > 24)
+          throw Failure("dunbar-humphreys: 24 candidates rejected by rounding around one sample (radius " +
+                        std::to_string(r) + ")");
+        const double sliver = 1e-13 * std::ldexp(1.0, rejected);
+        arcs.remove({t - sliver < 0.0 ? t - sliver + 4.0 : t - sliver, 2.0 * sliver});
+        continue;
+      }
+      near[nnear++] = append_sample(points, grid, q);
+      // The new sample blocks exactly +-60 degrees of the circle.
+      arcs.remove(detail::diamond_arc(0.5 * vx + sin60 * vy, 0.5 * vy - sin60 * vx, 0.5 * vx - sin60 * vy,
+                                      0.5 * vy + sin60 * vx));
+    }
+  }
+  return points;
 }
 
 // ---------------------------------------------------------------------------
@@ -647,9 +741,6 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
   domain.validate();
   const double r = params.radius;
   require_radius_budget(domain, r, params.max_points);
-  // The circle radius: a hair above r, so that samples placed on it stay at
-  // least r apart after rounding (see the file comment).
-  const double rc = r * (1.0 + 1e-10);
   if (params.variant < 0 || params.variant > 2)
     throw InvalidArgument(
         "dunbar-humphreys: variant must be 0 (boundary), 1 (scalloped sectors) or 2 (global sectors), got " +
@@ -664,118 +755,7 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
     return params.variant == 1 ? scalloped_sector_sampling(params, domain, seed)
                                : global_scalloped_sampling(params, domain, seed);
   }
-  if (domain.periodic)
-    for (int i = 0; i < 2; ++i)
-      if (domain.extent(i) < 4.0 * rc)  // neighbours within 2 rc need one nearest image
-        throw InvalidArgument(
-            "dunbar-humphreys: on a torus every period must be more than 4 radius (the circles are 1e-10 larger than "
-            "the radius); axis " +
-            std::to_string(i) + " has " + std::to_string(domain.extent(i)) + " for radius " + std::to_string(r));
-  const double r2 = r * r;
-
-  CellGrid grid(domain, r / std::sqrt(2.0));
-  // Cells that may hold a sample within 2 rc.
-  const int reach = grid.reach(2.0 * rc);
-  PointSet<2> points;
-  // Boundary sampling makes about 0.875 samples per r^2 (rho ~ 0.87); reserving
-  // that avoids the doubling that would otherwise set the peak memory.
-  points.reserve(static_cast<std::size_t>(0.9 * domain.volume() / r2) + 16);
-  // For each sample, the sample it was placed around and the angle it sits at
-  // on that sample's circle: the arcs a parent and siblings block then follow
-  // from the angles alone, without atan2/acos (measured: 1.2 of the 7.6 neighbours within 2r).
-  std::vector<std::int32_t> parent;
-  std::vector<double> angle;
-  parent.reserve(points.capacity());
-  angle.reserve(points.capacity());
-  Rng rng(seed);
-
-  auto add = [&](const Point<2>& q, std::int32_t from, double theta) {
-    const std::int32_t index = append_sample(points, grid, q);
-    parent.push_back(from);
-    angle.push_back(theta);
-    return index;
-  };
-  add(uniform_point(rng, domain), -1, 0.0);
-
-  Arcs arcs;
-  std::vector<std::int32_t> neighbours;  // samples within 2 rc of the front sample, and its new ones
-  const double reach2 = 4.0 * rc * rc;
-  constexpr double kPi = std::numbers::pi;
-  // The front is every sample not yet processed; taking it in insertion order
-  // (breadth first) keeps the grid rows and points being touched in cache.
-  for (std::size_t head = 0; head < points.size(); ++head) {
-    const auto pi = static_cast<std::int32_t>(head);
-    const Point<2> p = points[head];
-    const std::int32_t pp = parent[head];
-
-    arcs.reset();
-    if (!domain.periodic) {
-      // A wall at distance w < rc blocks the arc of half-angle acos(w / rc)
-      // facing it, as a sample at distance 2w would.
-      for (int axis = 0; axis < 2; ++axis) {
-        const double facing_lo = axis == 0 ? kPi : 1.5 * kPi;
-        const double to_lo = p[axis] - domain.lo[axis], to_hi = domain.hi[axis] - p[axis];
-        if (to_lo < rc) {
-          const double h = std::acos(to_lo / rc);
-          arcs.remove(facing_lo - h, facing_lo + h);
-        }
-        if (to_hi < rc) {
-          const double h = std::acos(to_hi / rc);
-          const double facing_hi = facing_lo - kPi;
-          arcs.remove(facing_hi - h, facing_hi + h);
-        }
-      }
-    }
-    neighbours.clear();
-    grid.for_each_near(p, reach, [&](std::int32_t j) {
-      if (j == pi) return;
-      const Point<2>& s = points[static_cast<std::size_t>(j)];
-      const double dx = domain.delta(p[0], s[0], 0), dy = domain.delta(p[1], s[1], 1);
-      const double d2 = dx * dx + dy * dy;
-      if (d2 >= reach2) return;
-      neighbours.push_back(j);
-      const auto js = static_cast<std::size_t>(j);
-      double c, h;
-      if (j == pp) {
-        // The parent is at distance rc, opposite the angle p sits at.
-        c = angle[head] + kPi;
-        h = kPi / 3.0;
-      } else if (pp >= 0 && parent[js] == pp) {
-        // A sibling: both on the parent's circle, at angles a and b. The chord
-        // b - a has length 2 rc |sin(delta/2)| and points at (a + b)/2 + 90
-        // degrees (flipped when delta < 0); acos(|sin(delta/2)|) is the half-angle.
-        const double delta = angle[js] - angle[head];
-        c = 0.5 * (angle[js] + angle[head]) + 0.5 * kPi + (delta < 0.0 ? kPi : 0.0);
-        h = std::abs(0.5 * kPi - 0.5 * std::abs(delta));
-      } else {
-        h = std::acos(std::sqrt(d2) / (2.0 * rc));
-        c = std::atan2(dy, dx);
-      }
-      if (c >= kTwoPi) c -= kTwoPi;
-      if (c < 0.0) c += kTwoPi;
-      arcs.remove(c - h, c + h);
-    });
-
-    int rejected = 0;
-    while (!arcs.empty()) {
-      const double theta = arcs.sample(rng);
-      Point<2> q;
-      if (!polar_candidate(domain, points, neighbours, p, rc, theta, r2, q)) {
-        // Only rounding at an arc's end or at a wall can get here: drop a
-        // sliver of the circle around theta. Bounded per front sample.
-        if (++rejected > 64)
-          throw Failure("dunbar-humphreys: 64 candidates rejected by rounding around one sample (radius " +
-                        std::to_string(r) + ")");
-        arcs.remove(theta - 1e-12, theta + 1e-12);
-        continue;
-      }
-      const std::int32_t qi = add(q, pi, theta);
-      neighbours.push_back(qi);
-      // A sample on the circle blocks exactly +-60 degrees of it.
-      arcs.remove(theta - kPi / 3.0, theta + kPi / 3.0);
-    }
-  }
-  return points;
+  return boundary_sampling(params, domain, seed);
 }
 
 const Method& dunbar_humphreys_method() {

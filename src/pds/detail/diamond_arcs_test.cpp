@@ -1,0 +1,138 @@
+#include "pds/detail/diamond_arcs.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace pds::detail {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double true_angle(double t) {
+  const auto [x, y] = diamond_direction(t);
+  const double a = std::atan2(y, x);
+  return a < 0.0 ? a + 2.0 * kPi : a;
+}
+
+// True when t lies strictly inside `arc` (diamond angles, wrapping at 4).
+bool inside(const DiamondArc& arc, double t) {
+  const double past = diamond_past(t, arc.lo);
+  return past > 0.0 && past < arc.len;
+}
+
+double distance_to_end(const DiamondArc& arc, double t) {
+  const double end = std::fmod(arc.lo + arc.len, 4.0);
+  auto circular = [](double a, double b) { return std::min(std::abs(a - b), 4.0 - std::abs(a - b)); };
+  return std::min(circular(t, arc.lo), circular(t, end));
+}
+
+TEST(DiamondAngle, IncreasesWithTheTrueAngleAndInvertsDiamondDirection) {
+  const int n = 100000;
+  double previous = -1.0;
+  for (int k = 0; k < n; ++k) {
+    const double theta = 2.0 * kPi * k / n;
+    const double t = diamond_angle(std::cos(theta), std::sin(theta));
+    ASSERT_GT(t, previous) << "theta " << theta;
+    ASSERT_LT(t, 4.0);
+    previous = t;
+    EXPECT_NEAR(true_angle(t), theta, 1e-14 + 1e-15 * theta) << "t " << t;
+    const auto [x, y] = diamond_direction(t);
+    EXPECT_NEAR(diamond_angle(x, y), t, 4e-16 * 4.0);
+  }
+}
+
+// The free set equals the complement of the blocked arcs, before and after
+// cuts, at random probes away from the arcs' ends (where rounding decides).
+TEST(FreeArcs, ComplementAndCutsMatchBruteForce) {
+  Rng rng(11);
+  FreeArcs free;
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<DiamondArc> blocked(rng.below(11));
+    for (auto& a : blocked) a = {rng.uniform(0.0, 4.0), rng.uniform(0.0, 2.0)};
+    std::vector<DiamondArc> sorted = blocked;  // assign_complement sorts its input
+    free.assign_complement(sorted.data(), static_cast<int>(sorted.size()));
+    const int cuts = static_cast<int>(rng.below(4));
+    for (int c = 0; c < cuts; ++c) {
+      const DiamondArc cut{rng.uniform(0.0, 4.0), rng.uniform(0.0, 1.5)};
+      free.remove(cut);
+      blocked.push_back(cut);
+    }
+    for (const DiamondArc& a : free.arcs()) {
+      ASSERT_GE(a.lo, 0.0);
+      ASSERT_LT(a.lo, 4.0);
+      ASSERT_GT(a.len, 0.0);
+    }
+    for (int probe = 0; probe < 100; ++probe) {
+      const double t = rng.uniform(0.0, 4.0);
+      bool near_end = false, is_blocked = false, is_free = false;
+      for (const DiamondArc& a : blocked) {
+        near_end |= distance_to_end(a, t) < 1e-9;
+        is_blocked |= inside(a, t);
+      }
+      for (const DiamondArc& a : free.arcs()) {
+        near_end |= distance_to_end(a, t) < 1e-9;
+        is_free |= inside(a, t);
+      }
+      if (near_end) continue;
+      ASSERT_NE(is_free, is_blocked) << "trial " << trial << " t " << t;
+    }
+    EXPECT_EQ(free.empty(), free.arcs().empty());
+  }
+}
+
+double chi_square_of_true_angles(const FreeArcs& free, bool corrected, int draws, int bins) {
+  Rng rng(5);
+  std::vector<double> counts(static_cast<std::size_t>(bins));
+  for (int i = 0; i < draws; ++i) {
+    const double t = corrected ? free.sample(rng) : free.at(rng.uniform());
+    counts[std::min(static_cast<std::size_t>(bins - 1),
+                    static_cast<std::size_t>(true_angle(t) / (2.0 * kPi) * bins))] += 1;
+  }
+  const double expected = static_cast<double>(draws) / bins;
+  double chi2 = 0.0;
+  for (double c : counts) chi2 += (c - expected) * (c - expected) / expected;
+  return chi2;
+}
+
+// sample() is uniform in true angle over the whole circle; uniform diamond
+// angles alone (at()) are not: twice as dense on the axes as on the diagonals.
+TEST(FreeArcs, SampleIsUniformInTrueAngle) {
+  FreeArcs free;
+  free.assign_complement(nullptr, 0);
+  // 83.0: the 1e-5 upper quantile of chi-square with 35 degrees of freedom
+  // (Wilson-Hilferty).
+  EXPECT_LT(chi_square_of_true_angles(free, true, 360000, 36), 83.0);
+  EXPECT_GT(chi_square_of_true_angles(free, false, 360000, 36), 1000.0);
+}
+
+// Over two free arcs each gets draws in proportion to its true angular length,
+// and every draw lies inside a free arc.
+TEST(FreeArcs, SampleSplitsBetweenArcsByTrueLength) {
+  std::array<DiamondArc, 2> blocked{{{0.9, 1.6}, {3.7, 0.6}}};  // free: [0.3, 0.9) and [2.5, 3.7)
+  FreeArcs free;
+  free.assign_complement(blocked.data(), 2);
+  ASSERT_EQ(free.arcs().size(), 2u);
+  const auto length = [](double lo, double hi) {
+    double d = true_angle(hi) - true_angle(lo);
+    return d < 0.0 ? d + 2.0 * kPi : d;
+  };
+  const double first = length(0.3, 0.9), second = length(2.5, 3.7);
+  const double p = first / (first + second);
+  Rng rng(8);
+  const int draws = 100000;
+  int in_first = 0;
+  for (int i = 0; i < draws; ++i) {
+    const double t = free.sample(rng);
+    ASSERT_TRUE((t >= 0.3 && t < 0.9) || (t >= 2.5 && t < 3.7)) << t;
+    in_first += t < 0.9;
+  }
+  const double sd = std::sqrt(p * (1.0 - p) / draws);
+  EXPECT_NEAR(static_cast<double>(in_first) / draws, p, 5.0 * sd);
+}
+
+}  // namespace
+}  // namespace pds::detail
