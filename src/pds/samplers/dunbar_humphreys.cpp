@@ -316,8 +316,8 @@ PointSet<2> boundary_sampling(const DunbarHumphreysParams& params, const Domain<
         fits = domain.distance2(q, points[static_cast<std::size_t>(near[i])]) >= r2;
       if (!fits) {
         // Only rounding at an arc's end or at a wall gets here: drop a sliver
-        // around t, wider each time (at most 2e-6, and a dropped arc of width w
-        // leaves a hole of depth about w^2 r / 8). Bounded per front sample.
+        // around t, twice as wide each time (6.7e-6 in all, at most 1.4e-5 rad; an arc of w rad
+        // dropped leaves a hole of depth about w^2 r / 8). Bounded per front sample.
         if (++rejected > 24)
           throw Failure("dunbar-humphreys: 24 candidates rejected by rounding around one sample (radius " +
                         std::to_string(r) + ")");
