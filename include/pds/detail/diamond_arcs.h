@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "pds/error.h"
@@ -15,31 +16,21 @@
 namespace pds::detail {
 
 /// A direction (x, y) != 0 as its "diamond angle" in [0, 4]: where the ray
-/// meets the square |x| + |y| = 1, counted quadrant by quadrant (4 is 0 again).
-/// It increases with the true angle, costs one division, and is exact to
-/// rounding, so arcs can be ordered and cut without trigonometry.
+/// meets the square |x| + |y| = 1, measured along the square (so 1 per
+/// quadrant; 4 is 0 again). With u = x / (|x| + |y|) it is 1 - u above the
+/// x axis and 3 + u below, i.e. 2 - copysign(1 + u, y): one division and no
+/// branch (the sign of y picks the half). It increases with the true angle
+/// (rounding is monotone), so arcs can be ordered and cut without trigonometry.
 inline double diamond_angle(double x, double y) {
-  const double ax = std::abs(x), ay = std::abs(y);
-  const double f = ay / (ax + ay);             // past the x axis, within the quadrant
-  const double upper = x < 0.0 ? 2.0 - f : f;  // the angle of (x, |y|), in [0, 2]
-  return y < 0.0 ? 4.0 - upper : upper;        // below the axis: mirrored
+  const double u = x / (std::abs(x) + std::abs(y));
+  return 2.0 - std::copysign(1.0 + u, y);
 }
 
 /// A direction at diamond angle t in [0, 4) (the inverse of diamond_angle, on
-/// the square |x| + |y| = 1).
+/// the square |x| + |y| = 1): x = |t - 2| - 1, y = +-(1 - |x|), + for t < 2.
 inline std::array<double, 2> diamond_direction(double t) {
-  const int quadrant = std::min(static_cast<int>(t), 3);
-  const double s = t - quadrant, c = 1.0 - s;
-  switch (quadrant) {
-    case 0:
-      return {c, s};
-    case 1:
-      return {-s, c};
-    case 2:
-      return {-c, -s};
-    default:
-      return {s, -c};
-  }
+  const double x = std::abs(t - 2.0) - 1.0;
+  return {x, std::copysign(1.0 - std::abs(x), 2.0 - t)};
 }
 
 /// An arc of directions: from diamond angle `lo` in [0, 4) counterclockwise
@@ -50,9 +41,11 @@ struct DiamondArc {
 
 /// The arc from direction a counterclockwise to direction b (less than a full turn).
 inline DiamondArc diamond_arc(double ax, double ay, double bx, double by) {
+  // The wraps are arithmetic (adding 0 or 4 is exact) so that no branch
+  // depends on the random directions.
   double lo = diamond_angle(ax, ay), len = diamond_angle(bx, by) - lo;
-  lo = lo >= 4.0 ? lo - 4.0 : lo;
-  len = len < 0.0 ? len + 4.0 : len;
+  lo -= 4.0 * static_cast<double>(lo >= 4.0);
+  len += 4.0 * static_cast<double>(len < 0.0);
   return {lo, len};
 }
 
@@ -71,24 +64,37 @@ class FreeArcs {
   static constexpr int kMaxBlocked = 32;
 
   /// The directions that no arc of `blocked` holds in its interior; sorts
-  /// `blocked` by start.
+  /// `blocked` by start (stably).
   void assign_complement(DiamondArc* blocked, int count) {
-    arcs_.clear();
-    // Insertion sort: the 5-10 arcs of a front sample.
-    for (int i = 1; i < count; ++i) {
-      const DiamondArc a = blocked[i];
-      int j = i;
-      for (; j > 0 && blocked[j - 1].lo > a.lo; --j) blocked[j] = blocked[j - 1];
-      blocked[j] = a;
+    // Sorted by rank rather than by insertion: the 5-10 arcs of a front
+    // sample come in random order, and an insertion sort's branches are
+    // mispredicted about once per arc; counting ranks has no data-dependent
+    // branch (and the same order: ties keep their input order).
+    if (count > kMaxBlocked) throw std::logic_error("free arcs: more blocked arcs than a circle can have");
+    DiamondArc sorted[kMaxBlocked];
+    for (int i = 0; i < count; ++i) {
+      const double lo = blocked[i].lo;
+      int rank = 0;
+      for (int j = 0; j < count; ++j) rank += (blocked[j].lo < lo) | ((blocked[j].lo == lo) & (j < i));
+      sorted[rank] = blocked[i];
     }
+    std::copy(sorted, sorted + count, blocked);
     // Sweep from 0, where the arcs that wrap past 4 already cover [0, covered).
+    // Every gap is written and kept only if long enough (no branch either).
+    arcs_.resize(static_cast<std::size_t>(count) + 1);
+    DiamondArc* out = arcs_.data();
     double covered = 0.0;
     for (int i = 0; i < count; ++i) covered = std::max(covered, blocked[i].lo + blocked[i].len - 4.0);
+    int kept = 0;
     for (int i = 0; i < count; ++i) {
-      if (blocked[i].lo - covered > kMinArc) arcs_.push_back({covered, blocked[i].lo - covered});
+      const double gap = blocked[i].lo - covered;
+      out[kept] = {covered, gap};
+      kept += gap > kMinArc;
       covered = std::max(covered, blocked[i].lo + blocked[i].len);
     }
-    if (4.0 - covered > kMinArc) arcs_.push_back({covered, 4.0 - covered});
+    out[kept] = {covered, 4.0 - covered};
+    kept += 4.0 - covered > kMinArc;
+    arcs_.resize(static_cast<std::size_t>(kept));
   }
 
   bool empty() const { return arcs_.empty(); }

@@ -142,7 +142,10 @@ class CellGrid {
   int collect_near(const Point<2>& p, int reach, std::int32_t* out, bool& seam) const {
     int first[2], last[2];
     window(p, reach, first, last);
-    seam = first[0] < 0 || first[1] < 0 || last[0] >= n_[0] || last[1] >= n_[1];
+    // A torus window that crosses a seam, or that was clamped to the whole
+    // axis, needs nearest images.
+    seam = first[0] < 0 || first[1] < 0 || last[0] >= n_[0] || last[1] >= n_[1] ||
+           (domain_.periodic && (last[0] - first[0] + 1 == n_[0] || last[1] - first[1] + 1 == n_[1]));
     const int width = last[0] - first[0] + 1;
     if (width > kMaxWindow) throw std::logic_error("dunbar-humphreys: neighbour window wider than planned");
     int n = 0;
@@ -311,9 +314,17 @@ PointSet<2> boundary_sampling(const DunbarHumphreysParams& params, const Domain<
       const auto [vx, vy] = detail::diamond_direction(t);
       const double scale = rc / std::sqrt(vx * vx + vy * vy);
       const Point<2> q = domain.wrap(Point<2>{{p[0] + vx * scale, p[1] + vy * scale}});
-      bool fits = domain.contains(q) && domain.distance2(p, q) >= r2;
-      for (int i = 0; fits && i < nnear; ++i)
-        fits = domain.distance2(q, points[static_cast<std::size_t>(near[i])]) >= r2;
+      // Away from a seam the plain distances decide exactly as the nearest
+      // images would: q is within rc of p and a neighbour within 2 rc, so a
+      // coordinate difference beyond half a period (> 2 rc) leaves both
+      // distances above r.
+      const auto far_enough = [&](const Point<2>& a, const Point<2>& b) {
+        if (seam) return domain.distance2(a, b) >= r2;
+        const double dx = a[0] - b[0], dy = a[1] - b[1];
+        return dx * dx + dy * dy >= r2;
+      };
+      bool fits = domain.contains(q) && far_enough(p, q);
+      for (int i = 0; fits && i < nnear; ++i) fits = far_enough(q, points[static_cast<std::size_t>(near[i])]);
       if (!fits) {
         // Only rounding at an arc's end or at a wall gets here: drop a sliver
         // around t, twice as wide each time (6.7e-6 in all, at most 1.4e-5 rad; an arc of w rad
