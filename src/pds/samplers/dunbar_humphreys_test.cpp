@@ -25,6 +25,20 @@ TEST(DunbarHumphreys, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
   }
 }
 
+// Tori only a few radii wide, where the neighbour window covers a whole axis:
+// the nearest images must still be used there (before that was handled, such
+// tori looped or exhausted memory).
+TEST(DunbarHumphreys, SmallToriStayExactAndMaximal) {
+  const Domain<2> domain{{{0.0, 0.0}}, {{1.0, 1.3}}, true};
+  for (double r : {0.24, 0.22, 0.2, 0.18, 0.16, 0.13, 0.11}) {
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+      const auto points = dunbar_humphreys({r}, domain, seed);
+      EXPECT_GE(min_distance_brute_force(points, domain).distance, r) << "r " << r << " seed " << seed;
+      EXPECT_TRUE(check_maximality(points, domain, r).maximal) << "r " << r << " seed " << seed;
+    }
+  }
+}
+
 TEST(DunbarHumphreys, SameSeedSamePointsOtherSeedOtherPoints) {
   const auto domain = testing_stats::offset_domain<2>(false);
   EXPECT_EQ(dunbar_humphreys({0.03}, domain, 3), dunbar_humphreys({0.03}, domain, 3));
