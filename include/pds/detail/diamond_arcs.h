@@ -66,12 +66,12 @@ class FreeArcs {
   /// The directions that no arc of `blocked` holds in its interior; sorts
   /// `blocked` by start (stably).
   void assign_complement(DiamondArc* blocked, int count) {
-    // Sorted by rank rather than by insertion: the 5-10 arcs of a front
-    // sample come in random order, and an insertion sort's branches are
-    // mispredicted about once per arc; counting ranks has no data-dependent
-    // branch (and the same order: ties keep their input order).
     if (count > kMaxBlocked) throw std::logic_error("free arcs: more blocked arcs than a circle can have");
     DiamondArc sorted[kMaxBlocked];
+    // By rank rather than by insertion: the 5-10 arcs of a front sample come
+    // in random order, and an insertion sort's branches are mispredicted
+    // about once per arc; counting ranks has no data-dependent branch (ties
+    // keep their input order, as a stable sort would).
     for (int i = 0; i < count; ++i) {
       const double lo = blocked[i].lo;
       int rank = 0;
@@ -79,23 +79,68 @@ class FreeArcs {
       sorted[rank] = blocked[i];
     }
     std::copy(sorted, sorted + count, blocked);
+    assign_complement_of_sorted(blocked, count);
+  }
+
+  /// The same for arcs already sorted by start.
+  void assign_complement_of_sorted(const DiamondArc* sorted, int count) {
     // Sweep from 0, where the arcs that wrap past 4 already cover [0, covered).
     // Every gap is written and kept only if long enough (no branch either).
     arcs_.resize(static_cast<std::size_t>(count) + 1);
     DiamondArc* out = arcs_.data();
     double covered = 0.0;
-    for (int i = 0; i < count; ++i) covered = std::max(covered, blocked[i].lo + blocked[i].len - 4.0);
+    for (int i = 0; i < count; ++i) covered = std::max(covered, sorted[i].lo + sorted[i].len - 4.0);
     int kept = 0;
     for (int i = 0; i < count; ++i) {
-      const double gap = blocked[i].lo - covered;
+      const double gap = sorted[i].lo - covered;
       out[kept] = {covered, gap};
       kept += gap > kMinArc;
-      covered = std::max(covered, blocked[i].lo + blocked[i].len);
+      covered = std::max(covered, sorted[i].lo + sorted[i].len);
     }
     out[kept] = {covered, 4.0 - covered};
     kept += 4.0 - covered > kMinArc;
     arcs_.resize(static_cast<std::size_t>(kept));
   }
+
+  /// The same free arcs without sorting `blocked` (given as starts `lo` and
+  /// lengths `len`): the gap before arc k begins where the arcs that start
+  /// before it (ties: earlier in the list) stop covering, exactly the value
+  /// the sorted sweep reaches there; the last gap ends at 4. Equal numbers
+  /// to assign_complement, listed in the order of the arcs they end at
+  /// rather than by start. No data-dependent branch.
+  void assign_complement_unsorted(const double* lo, const double* len, int count) {
+    double first = 0.0;  // [0, first) is covered by arcs that wrap past 4
+    for (int i = 0; i < count; ++i) first = std::max(first, lo[i] + len[i] - 4.0);
+    arcs_.resize(static_cast<std::size_t>(count) + 1);
+    DiamondArc* out = arcs_.data();
+    int kept = 0;
+    double last = first;
+    for (int k = 0; k < count; ++k) {
+      double covered = first;
+      for (int i = 0; i < count; ++i) {
+        const bool before = (lo[i] < lo[k]) | ((lo[i] == lo[k]) & (i < k));
+        // Ends are >= 0 and so is covered: an end times 0 leaves it unchanged.
+        covered = std::max(covered, (lo[i] + len[i]) * static_cast<double>(before));
+      }
+      const double gap = lo[k] - covered;
+      out[kept] = {covered, gap};
+      kept += gap > kMinArc;
+      last = std::max(last, lo[k] + len[k]);
+    }
+    out[kept] = {last, 4.0 - last};
+    kept += 4.0 - last > kMinArc;
+    arcs_.resize(static_cast<std::size_t>(kept));
+  }
+
+  /// Room for `most` arcs, to be written directly (by a vectorised
+  /// complement that computes what assign_complement_unsorted does), then
+  /// finish_fill with how many were written.
+  DiamondArc* begin_fill(std::size_t most) {
+    arcs_.resize(most);
+    return arcs_.data();
+  }
+  void finish_fill(std::size_t count) { arcs_.resize(count); }
+  static constexpr double min_arc() { return kMinArc; }
 
   bool empty() const { return arcs_.empty(); }
   const std::vector<DiamondArc>& arcs() const { return arcs_; }
@@ -144,7 +189,7 @@ class FreeArcs {
   double sample(Rng& rng) const {
     for (int attempt = 0; attempt < 1000; ++attempt) {
       const double t = at(rng.uniform());
-      const double s = t - std::floor(t), c = 1.0 - s;
+      const double s = t - static_cast<double>(static_cast<int>(t)), c = 1.0 - s;  // t >= 0: truncation is floor
       if (2.0 * (c * c + s * s) * rng.uniform() < 1.0) return t;
     }
     // Each try succeeds with probability at least 1/2.

@@ -88,6 +88,15 @@
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 
+// The AVX-512 neighbourhood kernel of boundary sampling: x86-64 with GCC or
+// Clang, chosen at run time when the processor has AVX-512 F and VL.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define PDS_HAVE_AVX512_KERNEL 1
+#include <immintrin.h>
+#else
+#define PDS_HAVE_AVX512_KERNEL 0
+#endif
+
 namespace pds {
 namespace {
 
@@ -136,16 +145,29 @@ class CellGrid {
     }
   }
 
+  /// The window of cells within `reach` of p's cell as [first, last] per
+  /// axis; true when it needs no nearest image (in a box always; on a torus
+  /// when it neither crosses a seam nor covers a whole axis).
+  bool plain_window(const Point<2>& p, int reach, int first[2], int last[2]) const {
+    window(p, reach, first, last);
+    return !(first[0] < 0 || first[1] < 0 || last[0] >= n_[0] || last[1] >= n_[1] ||
+             (domain_.periodic && (last[0] - first[0] + 1 == n_[0] || last[1] - first[1] + 1 == n_[1])));
+  }
+  /// Row y of the grid (y in [-n, 2n), wrapped).
+  const std::int32_t* row_pointer(int y) const { return row(y); }
+
+  // collect_near's window width: 2 radius is 2.83 cells of radius / sqrt 2,
+  // up to 3.33 where rounding the cell count up shrinks the cells (a torus
+  // period of 4 radius), so the reach is at most 4; a box that narrow has
+  // fewer cells than that across.
+  static constexpr int kMaxWindow = 9;
+
   /// The same samples written to `out` (room for (2 reach + 1)^2), their
   /// number returned: no branch per cell, for the hot loop of variant 0.
   /// `seam` tells whether the window crossed a torus seam.
   int collect_near(const Point<2>& p, int reach, std::int32_t* out, bool& seam) const {
     int first[2], last[2];
-    window(p, reach, first, last);
-    // A torus window that crosses a seam, or that was clamped to the whole
-    // axis, needs nearest images.
-    seam = first[0] < 0 || first[1] < 0 || last[0] >= n_[0] || last[1] >= n_[1] ||
-           (domain_.periodic && (last[0] - first[0] + 1 == n_[0] || last[1] - first[1] + 1 == n_[1]));
+    seam = !plain_window(p, reach, first, last);
     const int width = last[0] - first[0] + 1;
     if (width > kMaxWindow) throw std::logic_error("dunbar-humphreys: neighbour window wider than planned");
     int n = 0;
@@ -174,11 +196,6 @@ class CellGrid {
   }
 
  private:
-  // collect_near's window width: 2 radius is 2.83 cells of radius / sqrt 2,
-  // up to 3.33 where rounding the cell count up shrinks the cells (a torus
-  // period of 4 radius), so the reach is at most 4; a box that narrow has
-  // fewer cells than that across.
-  static constexpr int kMaxWindow = 9;
 
   /// The cell range [first, last] per axis within `reach` of p's cell:
   /// clipped in a box, possibly past the ends (to be wrapped) on a torus.
@@ -221,7 +238,269 @@ std::int32_t append_sample(PointSet<2>& points, CellGrid& grid, const Point<2>& 
 // Variant 0: boundary sampling.
 // ---------------------------------------------------------------------------
 
-PointSet<2> boundary_sampling(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed) {
+/// The samples within 2 rc of a front sample p (p excluded), in the window's
+/// row-major cell order, with their offsets from p; then the arcs of p's
+/// circle that they (and the walls) block. Arrays have slack past the most
+/// neighbours a circle can have (24), for whole-vector stores.
+struct Neighbourhood {
+  static constexpr int kCap = detail::FreeArcs::kMaxBlocked + 16;
+  alignas(64) std::int32_t index[kCap];
+  alignas(64) double dx[kCap];
+  alignas(64) double dy[kCap];
+  alignas(64) double d2[kCap];
+  alignas(64) double sx[kCap];  // their coordinates, for the exact test of a new sample
+  alignas(64) double sy[kCap];
+  int count = 0;
+  alignas(64) double lo[kCap];  // blocked arcs: start and length (diamond angles)
+  alignas(64) double len[kCap];
+  int blocked = 0;
+};
+
+/// What one front sample needs from the grid: its neighbourhood, gathered,
+/// its blocked arcs, and those arcs sorted by start. Two implementations
+/// compute exactly the same numbers (the same IEEE operations in the same
+/// order; no fused multiply-adds: this file is built with -ffp-contract=off):
+/// ScalarNeighbours, and on x86-64 with AVX-512, Avx512Neighbours, eight
+/// cells or neighbours per instruction. Same seed, same bytes either way
+/// (tested).
+struct ScalarNeighbours {
+  /// Fills nb.index/dx/dy/d2/count; `seam` is whether nearest images were needed.
+  static void gather(const CellGrid& grid, const PointSet<2>& points, const Domain<2>& domain, const Point<2>& p,
+                     std::int32_t self, int reach, double reach2, Neighbourhood& nb, bool& seam) {
+    std::int32_t cells[CellGrid::kMaxWindow * CellGrid::kMaxWindow];
+    const int ncells = grid.collect_near(p, reach, cells, seam);
+    int n = 0;
+    // Kept without a branch, so that the divisions that follow overlap.
+    const auto scan = [&](auto across_seam) {
+      for (int c = 0; c < ncells; ++c) {
+        const std::int32_t j = cells[c];
+        const Point<2>& s = points[static_cast<std::size_t>(j)];
+        double dx = s[0] - p[0], dy = s[1] - p[1];
+        if constexpr (across_seam) dx = domain.delta(p[0], s[0], 0), dy = domain.delta(p[1], s[1], 1);
+        const double d2 = dx * dx + dy * dy;
+        nb.index[n] = j;
+        nb.sx[n] = s[0];
+        nb.sy[n] = s[1];
+        nb.dx[n] = dx;
+        nb.dy[n] = dy;
+        nb.d2[n] = d2;
+        n += (d2 < reach2) & (j != self);
+      }
+    };
+    if (seam)
+      scan(std::true_type{});
+    else
+      scan(std::false_type{});
+    nb.count = n;
+  }
+
+  /// Appends the arc each neighbour blocks: the directions within
+  /// acos(d / 2rc) of its own; rotating (dx, dy) by -+ that angle gives
+  /// (dx +- dy k, dy -+ dx k) up to scale, with k = tan = sqrt((2rc)^2 - d^2) / d.
+  static void block(double reach2, Neighbourhood& nb) {
+    for (int i = 0; i < nb.count; ++i) {
+      const double dx = nb.dx[i], dy = nb.dy[i];
+      const double k = std::sqrt((reach2 - nb.d2[i]) / nb.d2[i]);
+      const detail::DiamondArc a = detail::diamond_arc(dx + dy * k, dy - dx * k, dx - dy * k, dy + dx * k);
+      nb.lo[nb.blocked] = a.lo;
+      nb.len[nb.blocked] = a.len;
+      ++nb.blocked;
+    }
+  }
+
+  /// Whether q is at least r from every neighbour (exactly, on the stored
+  /// coordinates; nearest images only when the window crossed a seam).
+  static bool clear_of_neighbours(const Neighbourhood& nb, const Point<2>& q, double r2, bool seam,
+                                  const Domain<2>& domain) {
+    bool clear = true;
+    for (int i = 0; clear && i < nb.count; ++i) {
+      const Point<2> s{{nb.sx[i], nb.sy[i]}};
+      if (seam) {
+        clear = domain.distance2(q, s) >= r2;
+      } else {
+        const double dx = q[0] - s[0], dy = q[1] - s[1];
+        clear = dx * dx + dy * dy >= r2;
+      }
+    }
+    return clear;
+  }
+
+  /// The free arcs of p's circle: the complement of the blocked ones.
+  static void complement(const Neighbourhood& nb, detail::FreeArcs& arcs) {
+    arcs.assign_complement_unsorted(nb.lo, nb.len, nb.blocked);
+  }
+};
+
+#if PDS_HAVE_AVX512_KERNEL
+#define PDS_AVX512 __attribute__((target("avx512f,avx512vl,popcnt")))
+
+struct Avx512Neighbours {
+  /// As ScalarNeighbours::gather; the usual window (7 cells wide, no seam)
+  /// one row per step: load the row's 7 cell entries, gather the points of
+  /// the occupied ones, keep those within 2 rc, compress them into place.
+  PDS_AVX512 static void gather(const CellGrid& grid, const PointSet<2>& points, const Domain<2>& domain,
+                                const Point<2>& p, std::int32_t self, int reach, double reach2, Neighbourhood& nb,
+                                bool& seam) {
+    int first[2], last[2];
+    const bool plain = grid.plain_window(p, reach, first, last);
+    if (!plain || last[0] - first[0] + 1 != 7) {
+      ScalarNeighbours::gather(grid, points, domain, p, self, reach, reach2, nb, seam);
+      return;
+    }
+    seam = false;
+    const double* base = &points[0][0];
+    const __m256i none = _mm256_set1_epi32(-1), own = _mm256_set1_epi32(self);
+    const __m512d px = _mm512_set1_pd(p[0]), py = _mm512_set1_pd(p[1]), limit = _mm512_set1_pd(reach2);
+    int n = 0;
+    for (int y = first[1]; y <= last[1]; ++y) {
+      const std::int32_t* row = grid.row_pointer(y) + first[0];
+      const __m256i j = _mm256_maskz_loadu_epi32(0x7F, row);  // 7 cells; the 8th lane reads nothing
+      const __mmask8 occupied = _mm256_mask_cmpneq_epi32_mask(
+          _mm256_mask_cmpgt_epi32_mask(0x7F, j, none), j, own);
+      const __m256i twice = _mm256_slli_epi32(j, 1);  // a point is two doubles
+      const __m512d zero = _mm512_setzero_pd();
+      const __m512d sx = _mm512_mask_i32gather_pd(zero, occupied, twice, base, 8);
+      const __m512d sy = _mm512_mask_i32gather_pd(zero, occupied, twice, base + 1, 8);
+      const __m512d dx = _mm512_sub_pd(sx, px), dy = _mm512_sub_pd(sy, py);
+      const __m512d d2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+      const __mmask8 keep = _mm512_mask_cmp_pd_mask(occupied, d2, limit, _CMP_LT_OQ);
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(nb.index + n), _mm256_maskz_compress_epi32(keep, j));
+      _mm512_storeu_pd(nb.sx + n, _mm512_maskz_compress_pd(keep, sx));
+      _mm512_storeu_pd(nb.sy + n, _mm512_maskz_compress_pd(keep, sy));
+      _mm512_storeu_pd(nb.dx + n, _mm512_maskz_compress_pd(keep, dx));
+      _mm512_storeu_pd(nb.dy + n, _mm512_maskz_compress_pd(keep, dy));
+      _mm512_storeu_pd(nb.d2 + n, _mm512_maskz_compress_pd(keep, d2));
+      n += __builtin_popcount(keep);
+    }
+    nb.count = n;
+  }
+
+  // Loops below run a fixed number of steps in the usual case (up to 16
+  // neighbours or arcs), masked past the end: a trip count that follows the
+  // random neighbourhood would cost a mispredicted branch per loop.
+  static constexpr int kUsual = 16;
+
+  /// The lanes [0, n) of an 8-lane step, for any n (clamped to 0..8).
+  PDS_AVX512 static __mmask8 first_lanes(int n) {
+    return static_cast<__mmask8>((1u << std::clamp(n, 0, 8)) - 1);
+  }
+  /// The largest lane (exact; written out rather than _mm512_reduce_max_pd,
+  /// which trips a GCC 12 warning in its own header).
+  PDS_AVX512 static double max_lane(__m512d v) {
+    alignas(64) double lanes[8];
+    _mm512_store_pd(lanes, v);
+    return std::max(std::max(std::max(lanes[0], lanes[1]), std::max(lanes[2], lanes[3])),
+                    std::max(std::max(lanes[4], lanes[5]), std::max(lanes[6], lanes[7])));
+  }
+  /// Steps of 8 covering n: 2 in the usual case.
+  static int steps(int n) { return n <= kUsual ? kUsual / 8 : (n + 7) / 8; }
+
+  /// As ScalarNeighbours::clear_of_neighbours, eight neighbours per step.
+  PDS_AVX512 static bool clear_of_neighbours(const Neighbourhood& nb, const Point<2>& q, double r2, bool seam,
+                                             const Domain<2>& domain) {
+    if (seam) return ScalarNeighbours::clear_of_neighbours(nb, q, r2, seam, domain);
+    const __m512d qx = _mm512_set1_pd(q[0]), qy = _mm512_set1_pd(q[1]), limit = _mm512_set1_pd(r2);
+    unsigned close = 0;
+    for (int step = 0, n = steps(nb.count); step < n; ++step) {
+      const int i = 8 * step;
+      const __mmask8 live = first_lanes(nb.count - i);
+      const __m512d dx = _mm512_sub_pd(qx, _mm512_maskz_loadu_pd(live, nb.sx + i));
+      const __m512d dy = _mm512_sub_pd(qy, _mm512_maskz_loadu_pd(live, nb.sy + i));
+      const __m512d d2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+      close |= _mm512_mask_cmp_pd_mask(live, d2, limit, _CMP_LT_OQ);
+    }
+    return close == 0;
+  }
+
+  /// The same IEEE steps as diamond_angle: 2 - copysign(1 + x / (|x| + |y|), y).
+  /// (Bit operations on integer lanes: the floating-point ones need AVX-512 DQ.)
+  PDS_AVX512 static __m512d diamond_angle(__m512d x, __m512d y) {
+    const __m512i sign = _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ull));
+    const __m512d u = _mm512_div_pd(x, _mm512_add_pd(_mm512_abs_pd(x), _mm512_abs_pd(y)));
+    const __m512d v = _mm512_add_pd(_mm512_set1_pd(1.0), u);
+    const __m512i signed_v = _mm512_or_si512(_mm512_castpd_si512(_mm512_abs_pd(v)),
+                                             _mm512_and_si512(sign, _mm512_castpd_si512(y)));  // copysign(v, y)
+    return _mm512_sub_pd(_mm512_set1_pd(2.0), _mm512_castsi512_pd(signed_v));
+  }
+
+  /// As ScalarNeighbours::block, eight neighbours per step.
+  PDS_AVX512 static void block(double reach2, Neighbourhood& nb) {
+    const __m512d limit = _mm512_set1_pd(reach2), four = _mm512_set1_pd(4.0), one = _mm512_set1_pd(1.0);
+    for (int step = 0, n = steps(nb.count); step < n; ++step) {
+      const int i = 8 * step;
+      const __mmask8 live = first_lanes(nb.count - i);
+      const __m512d dx = _mm512_maskz_loadu_pd(live, nb.dx + i), dy = _mm512_maskz_loadu_pd(live, nb.dy + i);
+      const __m512d d2 = _mm512_mask_loadu_pd(one, live, nb.d2 + i);
+      const __m512d ratio = _mm512_div_pd(_mm512_sub_pd(limit, d2), d2);
+      const __m512d k = _mm512_mask_sqrt_pd(ratio, 0xFF, ratio);  // (the unmasked form warns in GCC 12)
+      const __m512d dyk = _mm512_mul_pd(dy, k), dxk = _mm512_mul_pd(dx, k);
+      __m512d lo = diamond_angle(_mm512_add_pd(dx, dyk), _mm512_sub_pd(dy, dxk));
+      __m512d len = _mm512_sub_pd(diamond_angle(_mm512_sub_pd(dx, dyk), _mm512_add_pd(dy, dxk)), lo);
+      // lo -= 4 (lo >= 4), len += 4 (len < 0): the same exact subtraction and addition of 0 or 4.
+      lo = _mm512_sub_pd(lo, _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(lo, four, _CMP_GE_OQ), four));
+      len = _mm512_add_pd(len, _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(len, _mm512_setzero_pd(), _CMP_LT_OQ), four));
+      _mm512_storeu_pd(nb.lo + nb.blocked + i, lo);
+      _mm512_storeu_pd(nb.len + nb.blocked + i, len);
+    }
+    nb.blocked += nb.count;
+  }
+
+  /// As ScalarNeighbours::complement (FreeArcs::assign_complement_unsorted),
+  /// on up to 16 arcs held in two vectors: for each arc i, every arc k that
+  /// starts after it takes max(covered_k, end_i); the gaps that stay open are
+  /// compressed out in list order, then the one that ends at 4.
+  PDS_AVX512 static void complement(const Neighbourhood& nb, detail::FreeArcs& arcs) {
+    const int n = nb.blocked;
+    if (n > kUsual) return ScalarNeighbours::complement(nb, arcs);
+    const __mmask8 live[2] = {first_lanes(n), first_lanes(n - 8)};
+    __m512d lo[2], end[2], covered[2];
+    __m512d first = _mm512_setzero_pd(), last = _mm512_setzero_pd();
+    for (int h = 0; h < 2; ++h) {
+      lo[h] = _mm512_maskz_loadu_pd(live[h], nb.lo + 8 * h);
+      end[h] = _mm512_add_pd(lo[h], _mm512_maskz_loadu_pd(live[h], nb.len + 8 * h));
+      first = _mm512_mask_max_pd(first, live[h], first, _mm512_sub_pd(end[h], _mm512_set1_pd(4.0)));
+      last = _mm512_mask_max_pd(last, live[h], last, end[h]);
+    }
+    const double from = max_lane(first);  // over the arcs and 0
+    covered[0] = covered[1] = _mm512_set1_pd(from);
+    const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
+    for (int i = 0; i < n; ++i) {
+      const __m512d lo_i = _mm512_set1_pd(nb.lo[i]), end_i = _mm512_set1_pd(nb.lo[i] + nb.len[i]);
+      for (int h = 0; h < 2; ++h) {
+        const __mmask8 later = _mm512_cmpgt_epi64_mask(_mm512_add_epi64(lane, _mm512_set1_epi64(8 * h)),
+                                                       _mm512_set1_epi64(i));
+        const __mmask8 after = _mm512_mask_cmp_pd_mask(live[h], lo[h], lo_i, _CMP_GT_OQ) |
+                               _mm512_mask_cmp_pd_mask(live[h] & later, lo[h], lo_i, _CMP_EQ_OQ);
+        covered[h] = _mm512_mask_max_pd(covered[h], after, covered[h], end_i);
+      }
+    }
+    const double to = std::max(from, max_lane(last));
+    detail::DiamondArc* out = arcs.begin_fill(3 * kUsual);
+    auto* slots = reinterpret_cast<double*>(out);
+    std::size_t kept = 0;
+    const __m512i pairs_low = _mm512_set_epi64(11, 3, 10, 2, 9, 1, 8, 0);
+    const __m512i pairs_high = _mm512_set_epi64(15, 7, 14, 6, 13, 5, 12, 4);
+    const __m512d min_arc = _mm512_set1_pd(detail::FreeArcs::min_arc());
+    for (int h = 0; h < 2; ++h) {
+      const __m512d gap = _mm512_sub_pd(lo[h], covered[h]);
+      const __mmask8 open = _mm512_mask_cmp_pd_mask(live[h], gap, min_arc, _CMP_GT_OQ);
+      const __m512d starts = _mm512_maskz_compress_pd(open, covered[h]), lengths = _mm512_maskz_compress_pd(open, gap);
+      _mm512_storeu_pd(slots + 2 * kept, _mm512_permutex2var_pd(starts, pairs_low, lengths));
+      _mm512_storeu_pd(slots + 2 * kept + 8, _mm512_permutex2var_pd(starts, pairs_high, lengths));
+      kept += static_cast<std::size_t>(__builtin_popcount(open));
+    }
+    out[kept] = {to, 4.0 - to};
+    kept += 4.0 - to > detail::FreeArcs::min_arc();
+    arcs.finish_fill(kept);
+  }
+};
+#endif
+
+/// Boundary sampling with a given neighbourhood kernel (inlined into each
+/// entry point below, so that the AVX-512 one is compiled for that target).
+template <class Kernel>
+[[gnu::always_inline]] inline PointSet<2> boundary_sampling_with(const DunbarHumphreysParams& params,
+                                                                 const Domain<2>& domain, std::uint64_t seed) {
   const double r = params.radius, r2 = r * r;
   // The circle radius: a hair above r, so that samples placed on it stay at
   // least r apart after rounding (see the file comment).
@@ -246,85 +525,57 @@ PointSet<2> boundary_sampling(const DunbarHumphreysParams& params, const Domain<
   const double reach2 = 4.0 * rc * rc;
   const double sin60 = std::sqrt(3.0) / 2.0;
   detail::FreeArcs arcs;
-  std::vector<std::int32_t> cells(static_cast<std::size_t>((2 * reach + 1) * (2 * reach + 1)));
-  detail::DiamondArc blocked[detail::FreeArcs::kMaxBlocked];
-  // Samples within 2 rc, then the new ones (at most 6); one spare slot for
-  // the branch-free filling.
-  std::int32_t near[detail::FreeArcs::kMaxBlocked + 8];
+  Neighbourhood nb;
   // The front is every sample not yet processed, in insertion order (breadth
   // first), which keeps the grid rows and points being touched in cache.
   for (std::size_t head = 0; head < points.size(); ++head) {
-    const auto pi = static_cast<std::int32_t>(head);
+    const auto self = static_cast<std::int32_t>(head);
     const Point<2> p = points[head];
-    int nblocked = 0, nnear = 0;
+    nb.blocked = 0;
     if (!domain.periodic) {
       // A wall at distance w < rc blocks the directions whose component
       // towards it exceeds w / rc: from (-w, h) to (-w, -h) for the low x wall, etc.
+      const auto wall = [&](const detail::DiamondArc& a) {
+        nb.lo[nb.blocked] = a.lo;
+        nb.len[nb.blocked] = a.len;
+        ++nb.blocked;
+      };
       for (int axis = 0; axis < 2; ++axis) {
         const double to_lo = p[axis] - domain.lo[axis], to_hi = domain.hi[axis] - p[axis];
         if (to_lo < rc) {
           const double h = std::sqrt(rc * rc - to_lo * to_lo);
-          blocked[nblocked++] =
-              axis == 0 ? detail::diamond_arc(-to_lo, h, -to_lo, -h) : detail::diamond_arc(-h, -to_lo, h, -to_lo);
+          wall(axis == 0 ? detail::diamond_arc(-to_lo, h, -to_lo, -h) : detail::diamond_arc(-h, -to_lo, h, -to_lo));
         }
         if (to_hi < rc) {
           const double h = std::sqrt(rc * rc - to_hi * to_hi);
-          blocked[nblocked++] =
-              axis == 0 ? detail::diamond_arc(to_hi, -h, to_hi, h) : detail::diamond_arc(h, to_hi, -h, to_hi);
+          wall(axis == 0 ? detail::diamond_arc(to_hi, -h, to_hi, h) : detail::diamond_arc(h, to_hi, -h, to_hi));
         }
       }
     }
     bool seam = false;
-    const int ncells = grid.collect_near(p, reach, cells.data(), seam);
-    // The neighbours within 2 rc (kept without a branch, so that the
-    // divisions below overlap), then the arcs they block. Only a window across
-    // a torus seam needs the nearest image.
-    double ndx[detail::FreeArcs::kMaxBlocked], ndy[detail::FreeArcs::kMaxBlocked], nd2[detail::FreeArcs::kMaxBlocked];
-    const auto scan = [&](auto across_seam) {
-      for (int c = 0; c < ncells; ++c) {
-        const std::int32_t j = cells[static_cast<std::size_t>(c)];
-        const Point<2>& s = points[static_cast<std::size_t>(j)];
-        double dx = s[0] - p[0], dy = s[1] - p[1];
-        if constexpr (across_seam) dx = domain.delta(p[0], s[0], 0), dy = domain.delta(p[1], s[1], 1);
-        const double d2 = dx * dx + dy * dy;
-        near[nnear] = j;
-        ndx[nnear] = dx;
-        ndy[nnear] = dy;
-        nd2[nnear] = d2;
-        nnear += (d2 < reach2) & (j != pi);
-      }
-    };
-    if (seam)
-      scan(std::true_type{});
-    else
-      scan(std::false_type{});
-    for (int i = 0; i < nnear; ++i) {
-      // The sample blocks the directions within acos(d / 2rc) of its own:
-      // rotating (dx, dy) by -+ that angle gives (dx +- dy k, dy -+ dx k) up to
-      // scale, with k = tan = sqrt((2rc)^2 - d^2) / d.
-      const double dx = ndx[i], dy = ndy[i];
-      const double k = std::sqrt((reach2 - nd2[i]) / nd2[i]);
-      blocked[nblocked++] = detail::diamond_arc(dx + dy * k, dy - dx * k, dx - dy * k, dy + dx * k);
-    }
-    arcs.assign_complement(blocked, nblocked);
+    Kernel::gather(grid, points, domain, p, self, reach, reach2, nb, seam);
+    Kernel::block(reach2, nb);
+    if (nb.blocked > detail::FreeArcs::kMaxBlocked)
+      throw std::logic_error("dunbar-humphreys: more blocked arcs than a circle can have");
+    Kernel::complement(nb, arcs);
 
+    // Away from a seam the plain distances decide exactly as the nearest
+    // images would: q is within rc of p and a neighbour within 2 rc, so a
+    // coordinate difference beyond half a period (> 2 rc) leaves both
+    // distances above r.
+    const auto far_enough = [&](const Point<2>& a, const Point<2>& b) {
+      if (seam) return domain.distance2(a, b) >= r2;
+      const double dx = a[0] - b[0], dy = a[1] - b[1];
+      return dx * dx + dy * dy >= r2;
+    };
     int rejected = 0;
     while (!arcs.empty()) {
       const double t = arcs.sample(rng);  // uniform in true angle over the free arcs
       const auto [vx, vy] = detail::diamond_direction(t);
       const double scale = rc / std::sqrt(vx * vx + vy * vy);
       const Point<2> q = domain.wrap(Point<2>{{p[0] + vx * scale, p[1] + vy * scale}});
-      // Away from a seam the plain distances decide exactly as the nearest
-      // images would: q is within rc of p and a neighbour within 2 rc, so a
-      // coordinate difference beyond half a period (> 2 rc) leaves both
-      // distances above r.
-      const auto far_enough = [&](const Point<2>& a, const Point<2>& b) {
-        if (seam) return domain.distance2(a, b) >= r2;
-        const double dx = a[0] - b[0], dy = a[1] - b[1];
-        return dx * dx + dy * dy >= r2;
-      };
-      bool fits = domain.contains(q) && far_enough(p, q);
-      for (int i = 0; fits && i < nnear; ++i) fits = far_enough(q, points[static_cast<std::size_t>(near[i])]);
+      const bool fits =
+          domain.contains(q) && far_enough(p, q) && Kernel::clear_of_neighbours(nb, q, r2, seam, domain);
       if (!fits) {
         // Only rounding at an arc's end or at a wall gets here: drop a sliver
         // around t, twice as wide each time (6.7e-6 in all, at most 1.4e-5 rad; an arc of w rad
@@ -336,14 +587,31 @@ PointSet<2> boundary_sampling(const DunbarHumphreysParams& params, const Domain<
         arcs.remove({t - sliver < 0.0 ? t - sliver + 4.0 : t - sliver, 2.0 * sliver});
         continue;
       }
-      near[nnear++] = append_sample(points, grid, q);
-      // The new sample blocks exactly +-60 degrees of the circle.
+      // The new sample is a neighbour for the rest of p's circle.
+      nb.index[nb.count] = append_sample(points, grid, q);
+      nb.sx[nb.count] = q[0];
+      nb.sy[nb.count] = q[1];
+      ++nb.count;
+      // It blocks exactly +-60 degrees of the circle.
       arcs.remove(detail::diamond_arc(0.5 * vx + sin60 * vy, 0.5 * vy - sin60 * vx, 0.5 * vx - sin60 * vy,
                                       0.5 * vy + sin60 * vx));
     }
   }
   return points;
 }
+
+PointSet<2> boundary_sampling_scalar(const DunbarHumphreysParams& params, const Domain<2>& domain,
+                                     std::uint64_t seed) {
+  return boundary_sampling_with<ScalarNeighbours>(params, domain, seed);
+}
+
+#if PDS_HAVE_AVX512_KERNEL
+PDS_AVX512 PointSet<2> boundary_sampling_avx512(const DunbarHumphreysParams& params, const Domain<2>& domain,
+                                                std::uint64_t seed) {
+  return boundary_sampling_with<Avx512Neighbours>(params, domain, seed);
+}
+#endif
+
 
 // ---------------------------------------------------------------------------
 // Variant 1: the paper's scalloped sectors (sampling the full annulus r..2r).
@@ -748,6 +1016,39 @@ PointSet<2> scalloped_sector_sampling(const DunbarHumphreysParams& params, const
 
 }  // namespace
 
+namespace detail {
+
+bool dunbar_humphreys_has_vector_kernel() {
+#if PDS_HAVE_AVX512_KERNEL
+  static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  return has;
+#else
+  return false;
+#endif
+}
+
+PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const Domain<2>& domain,
+                                      std::uint64_t seed, bool vector_kernel) {
+  domain.validate();
+  require_radius_budget(domain, params.radius, params.max_points);
+#if PDS_HAVE_AVX512_KERNEL
+  // The kernel gathers points by 32-bit element offsets (twice the index):
+  // only for sets that cannot reach 2^30 samples (densest packing 1.155 / r^2).
+  const bool small_enough = 1.2 * domain.volume() / (params.radius * params.radius) < 0x1p30;
+  if (vector_kernel && small_enough) {
+    if (!dunbar_humphreys_has_vector_kernel())
+      throw InvalidArgument("dunbar-humphreys: the AVX-512 kernel was asked for on a processor without it");
+    return boundary_sampling_avx512(params, domain, seed);
+  }
+#else
+  if (vector_kernel) throw InvalidArgument("dunbar-humphreys: this build has no vector kernel");
+#endif
+  return boundary_sampling_scalar(params, domain, seed);
+}
+
+}  // namespace detail
+
+
 PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed) {
   domain.validate();
   const double r = params.radius;
@@ -766,7 +1067,7 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
     return params.variant == 1 ? scalloped_sector_sampling(params, domain, seed)
                                : global_scalloped_sampling(params, domain, seed);
   }
-  return boundary_sampling(params, domain, seed);
+  return detail::dunbar_humphreys_boundary(params, domain, seed, detail::dunbar_humphreys_has_vector_kernel());
 }
 
 const Method& dunbar_humphreys_method() {
