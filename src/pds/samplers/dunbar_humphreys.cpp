@@ -335,46 +335,6 @@ struct ScalarNeighbours {
 #define PDS_AVX512 __attribute__((target("avx512f,avx512vl,popcnt")))
 
 struct Avx512Neighbours {
-  /// As ScalarNeighbours::gather; the usual window (7 cells wide, no seam)
-  /// one row per step: load the row's 7 cell entries, gather the points of
-  /// the occupied ones, keep those within 2 rc, compress them into place.
-  PDS_AVX512 static void gather(const CellGrid& grid, const PointSet<2>& points, const Domain<2>& domain,
-                                const Point<2>& p, std::int32_t self, int reach, double reach2, Neighbourhood& nb,
-                                bool& seam) {
-    int first[2], last[2];
-    const bool plain = grid.plain_window(p, reach, first, last);
-    if (!plain || last[0] - first[0] + 1 != 7) {
-      ScalarNeighbours::gather(grid, points, domain, p, self, reach, reach2, nb, seam);
-      return;
-    }
-    seam = false;
-    const double* base = &points[0][0];
-    const __m256i none = _mm256_set1_epi32(-1), own = _mm256_set1_epi32(self);
-    const __m512d px = _mm512_set1_pd(p[0]), py = _mm512_set1_pd(p[1]), limit = _mm512_set1_pd(reach2);
-    int n = 0;
-    for (int y = first[1]; y <= last[1]; ++y) {
-      const std::int32_t* row = grid.row_pointer(y) + first[0];
-      const __m256i j = _mm256_maskz_loadu_epi32(0x7F, row);  // 7 cells; the 8th lane reads nothing
-      const __mmask8 occupied = _mm256_mask_cmpneq_epi32_mask(
-          _mm256_mask_cmpgt_epi32_mask(0x7F, j, none), j, own);
-      const __m256i twice = _mm256_slli_epi32(j, 1);  // a point is two doubles
-      const __m512d zero = _mm512_setzero_pd();
-      const __m512d sx = _mm512_mask_i32gather_pd(zero, occupied, twice, base, 8);
-      const __m512d sy = _mm512_mask_i32gather_pd(zero, occupied, twice, base + 1, 8);
-      const __m512d dx = _mm512_sub_pd(sx, px), dy = _mm512_sub_pd(sy, py);
-      const __m512d d2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
-      const __mmask8 keep = _mm512_mask_cmp_pd_mask(occupied, d2, limit, _CMP_LT_OQ);
-      _mm256_storeu_si256(reinterpret_cast<__m256i*>(nb.index + n), _mm256_maskz_compress_epi32(keep, j));
-      _mm512_storeu_pd(nb.sx + n, _mm512_maskz_compress_pd(keep, sx));
-      _mm512_storeu_pd(nb.sy + n, _mm512_maskz_compress_pd(keep, sy));
-      _mm512_storeu_pd(nb.dx + n, _mm512_maskz_compress_pd(keep, dx));
-      _mm512_storeu_pd(nb.dy + n, _mm512_maskz_compress_pd(keep, dy));
-      _mm512_storeu_pd(nb.d2 + n, _mm512_maskz_compress_pd(keep, d2));
-      n += __builtin_popcount(keep);
-    }
-    nb.count = n;
-  }
-
   // Loops below run a fixed number of steps in the usual case (up to 16
   // neighbours or arcs), masked past the end: a trip count that follows the
   // random neighbourhood would cost a mispredicted branch per loop.
@@ -553,7 +513,9 @@ template <class Kernel>
       }
     }
     bool seam = false;
-    Kernel::gather(grid, points, domain, p, self, reach, reach2, nb, seam);
+    // (Gathered by scalar loads in both kernels: AVX-512 gathers of the
+    // points, seven rows of them, measured slower here.)
+    ScalarNeighbours::gather(grid, points, domain, p, self, reach, reach2, nb, seam);
     Kernel::block(reach2, nb);
     if (nb.blocked > detail::FreeArcs::kMaxBlocked)
       throw std::logic_error("dunbar-humphreys: more blocked arcs than a circle can have");
@@ -573,7 +535,10 @@ template <class Kernel>
       const double t = arcs.sample(rng);  // uniform in true angle over the free arcs
       const auto [vx, vy] = detail::diamond_direction(t);
       const double scale = rc / std::sqrt(vx * vx + vy * vy);
-      const Point<2> q = domain.wrap(Point<2>{{p[0] + vx * scale, p[1] + vy * scale}});
+      // A plain window keeps p three cells (> rc) from every torus seam, so
+      // only a seam window can put q across one.
+      Point<2> q{{p[0] + vx * scale, p[1] + vy * scale}};
+      if (seam) q = domain.wrap(q);
       const bool fits =
           domain.contains(q) && far_enough(p, q) && Kernel::clear_of_neighbours(nb, q, r2, seam, domain);
       if (!fits) {
