@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -86,8 +87,7 @@ class FreeArcs {
   void assign_complement_of_sorted(const DiamondArc* sorted, int count) {
     // Sweep from 0, where the arcs that wrap past 4 already cover [0, covered).
     // Every gap is written and kept only if long enough (no branch either).
-    arcs_.resize(static_cast<std::size_t>(count) + 1);
-    DiamondArc* out = arcs_.data();
+    DiamondArc* out = arcs_;
     double covered = 0.0;
     for (int i = 0; i < count; ++i) covered = std::max(covered, sorted[i].lo + sorted[i].len - 4.0);
     int kept = 0;
@@ -99,7 +99,7 @@ class FreeArcs {
     }
     out[kept] = {covered, 4.0 - covered};
     kept += 4.0 - covered > kMinArc;
-    arcs_.resize(static_cast<std::size_t>(kept));
+    size_ = static_cast<std::size_t>(kept);
   }
 
   /// The same free arcs without sorting `blocked` (given as starts `lo` and
@@ -111,8 +111,8 @@ class FreeArcs {
   void assign_complement_unsorted(const double* lo, const double* len, int count) {
     double first = 0.0;  // [0, first) is covered by arcs that wrap past 4
     for (int i = 0; i < count; ++i) first = std::max(first, lo[i] + len[i] - 4.0);
-    arcs_.resize(static_cast<std::size_t>(count) + 1);
-    DiamondArc* out = arcs_.data();
+    if (count > kMaxBlocked) throw std::logic_error("free arcs: more blocked arcs than a circle can have");
+    DiamondArc* out = arcs_;
     int kept = 0;
     double last = first;
     for (int k = 0; k < count; ++k) {
@@ -129,25 +129,25 @@ class FreeArcs {
     }
     out[kept] = {last, 4.0 - last};
     kept += 4.0 - last > kMinArc;
-    arcs_.resize(static_cast<std::size_t>(kept));
+    size_ = static_cast<std::size_t>(kept);
   }
 
   /// Room for `most` arcs, to be written directly (by a vectorised
   /// complement that computes what assign_complement_unsorted does), then
   /// finish_fill with how many were written.
   DiamondArc* begin_fill(std::size_t most) {
-    arcs_.resize(most);
-    return arcs_.data();
+    if (most > kCapacity) throw std::logic_error("free arcs: fill beyond the capacity");
+    return arcs_;
   }
-  void finish_fill(std::size_t count) { arcs_.resize(count); }
+  void finish_fill(std::size_t count) { size_ = count; }
   static constexpr double min_arc() { return kMinArc; }
 
-  bool empty() const { return arcs_.empty(); }
-  const std::vector<DiamondArc>& arcs() const { return arcs_; }
+  bool empty() const { return size_ == 0; }
+  std::span<const DiamondArc> arcs() const { return {arcs_, size_}; }
 
   /// Removes the open arc `cut` (of less than a full turn).
   void remove(DiamondArc cut) {
-    const std::size_t n = arcs_.size();
+    const std::size_t n = size_;
     std::size_t out = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const DiamondArc a = arcs_[i];
@@ -160,26 +160,29 @@ class FreeArcs {
         continue;
       }
       if (head_end > kMinArc) arcs_[out++] = shifted(a, 0.0, head_end);
-      if (a.len - to > kMinArc) arcs_.push_back(shifted(a, to, a.len));
+      if (a.len - to > kMinArc) {
+        if (size_ == kCapacity) throw std::logic_error("free arcs: more pieces than a circle can have");
+        arcs_[size_++] = shifted(a, to, a.len);
+      }
     }
     // Pieces appended after n move down (the order is deterministic).
-    for (std::size_t i = n; i < arcs_.size(); ++i) arcs_[out++] = arcs_[i];
-    arcs_.resize(out);
+    for (std::size_t i = n; i < size_; ++i) arcs_[out++] = arcs_[i];
+    size_ = out;
   }
 
   /// The diamond angle at fraction u in [0, 1) of the free length.
   double at(double u) const {
     double total = 0.0;
-    for (const DiamondArc& a : arcs_) total += a.len;
+    for (const DiamondArc& a : arcs()) total += a.len;
     double x = u * total;
-    for (const DiamondArc& a : arcs_) {
+    for (const DiamondArc& a : arcs()) {
       if (x < a.len) {
         const double t = a.lo + x;
         return t >= 4.0 ? t - 4.0 : t;
       }
       x -= a.len;
     }
-    return arcs_.back().lo;  // only if rounding ran past the end
+    return arcs_[size_ - 1].lo;  // only if rounding ran past the end
   }
 
   /// A direction uniform in true angle over the free arcs, as a diamond
@@ -206,7 +209,14 @@ class FreeArcs {
   // Free arcs shorter than this are dropped: under 2e-13 rad (dtheta/dt <= 2),
   // an opening between disks narrower than 2e-13 radius.
   static constexpr double kMinArc = 1e-13;
-  std::vector<DiamondArc> arcs_;
+  // Fixed storage (a front sample's arcs are few, and a vector's resizing
+  // and zero-filling showed in the profile): at most kMaxBlocked + 1 arcs
+  // after a complement, one more per cut (at most 6 samples and 24
+  // slivers around one front sample), and room for begin_fill's whole-vector
+  // stores.
+  static constexpr std::size_t kCapacity = 64;
+  DiamondArc arcs_[kCapacity];
+  std::size_t size_ = 0;
 };
 
 }  // namespace pds::detail
