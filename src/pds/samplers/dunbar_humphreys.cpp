@@ -332,7 +332,7 @@ struct ScalarNeighbours {
 };
 
 #if PDS_HAVE_AVX512_KERNEL
-#define PDS_AVX512 __attribute__((target("avx512f,avx512vl,popcnt")))
+#define PDS_AVX512 __attribute__((target("arch=x86-64-v4")))
 
 struct Avx512Neighbours {
   // Loops below run a fixed number of steps in the usual case (up to 16
