@@ -56,8 +56,8 @@ const Method& dunbar_humphreys_method();
 
 namespace detail {
 /// Whether this build and processor have boundary sampling's AVX-512
-/// neighbourhood kernel (x86-64 with AVX-512 F and VL); dunbar_humphreys uses
-/// it when they do.
+/// neighbourhood kernel (x86-64 at the x86-64-v4 level: AVX-512 F, BW, CD, DQ,
+/// VL); dunbar_humphreys uses it when they do.
 bool dunbar_humphreys_has_vector_kernel();
 /// Boundary sampling (variant 0) with the vector kernel or the scalar one:
 /// the same points, bit for bit (for the test that says so). Asking for the

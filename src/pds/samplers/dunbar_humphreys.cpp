@@ -88,9 +88,9 @@
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 
-// The AVX-512 neighbourhood kernel of boundary sampling: x86-64 with GCC or
-// Clang, chosen at run time when the processor has AVX-512 F and VL.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+// The AVX-512 neighbourhood kernel of boundary sampling: x86-64 with GCC 12
+// or later (its target attribute and processor check), chosen at run time when the processor has the x86-64-v4 level.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
 #define PDS_HAVE_AVX512_KERNEL 1
 #include <immintrin.h>
 #else
@@ -985,7 +985,9 @@ namespace detail {
 
 bool dunbar_humphreys_has_vector_kernel() {
 #if PDS_HAVE_AVX512_KERNEL
-  static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  // The kernel is compiled for the whole x86-64-v4 level (AVX-512 F, BW, CD,
+  // DQ, VL with AVX2, BMI2, ...), so the processor must have all of it.
+  static const bool has = __builtin_cpu_supports("x86-64-v4");
   return has;
 #else
   return false;
