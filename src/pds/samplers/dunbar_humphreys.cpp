@@ -279,8 +279,6 @@ struct ScalarNeighbours {
         if constexpr (across_seam) dx = domain.delta(p[0], s[0], 0), dy = domain.delta(p[1], s[1], 1);
         const double d2 = dx * dx + dy * dy;
         nb.index[n] = j;
-        nb.sx[n] = s[0];
-        nb.sy[n] = s[1];
         nb.dx[n] = dx;
         nb.dy[n] = dy;
         nb.d2[n] = d2;
@@ -310,11 +308,11 @@ struct ScalarNeighbours {
 
   /// Whether q is at least r from every neighbour (exactly, on the stored
   /// coordinates; nearest images only when the window crossed a seam).
-  static bool clear_of_neighbours(const Neighbourhood& nb, const Point<2>& q, double r2, bool seam,
+  static bool clear_of_neighbours(const Neighbourhood& nb, const PointSet<2>& points, const Point<2>& q, double r2, bool seam,
                                   const Domain<2>& domain) {
     bool clear = true;
     for (int i = 0; clear && i < nb.count; ++i) {
-      const Point<2> s{{nb.sx[i], nb.sy[i]}};
+      const Point<2>& s = points[static_cast<std::size_t>(nb.index[i])];
       if (seam) {
         clear = domain.distance2(q, s) >= r2;
       } else {
@@ -355,22 +353,8 @@ struct Avx512Neighbours {
   /// Steps of 8 covering n: 2 in the usual case.
   static int steps(int n) { return n <= kUsual ? kUsual / 8 : (n + 7) / 8; }
 
-  /// As ScalarNeighbours::clear_of_neighbours, eight neighbours per step.
-  PDS_AVX512 static bool clear_of_neighbours(const Neighbourhood& nb, const Point<2>& q, double r2, bool seam,
-                                             const Domain<2>& domain) {
-    if (seam) return ScalarNeighbours::clear_of_neighbours(nb, q, r2, seam, domain);
-    const __m512d qx = _mm512_set1_pd(q[0]), qy = _mm512_set1_pd(q[1]), limit = _mm512_set1_pd(r2);
-    unsigned close = 0;
-    for (int step = 0, n = steps(nb.count); step < n; ++step) {
-      const int i = 8 * step;
-      const __mmask8 live = first_lanes(nb.count - i);
-      const __m512d dx = _mm512_sub_pd(qx, _mm512_maskz_loadu_pd(live, nb.sx + i));
-      const __m512d dy = _mm512_sub_pd(qy, _mm512_maskz_loadu_pd(live, nb.sy + i));
-      const __m512d d2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
-      close |= _mm512_mask_cmp_pd_mask(live, d2, limit, _CMP_LT_OQ);
-    }
-    return close == 0;
-  }
+  static bool clear_of_neighbours(const Neighbourhood& nb, const PointSet<2>& points, const Point<2>& q, double r2, bool seam,
+                                  const Domain<2>& domain) { return ScalarNeighbours::clear_of_neighbours(nb, points, q, r2, seam, domain); }
 
   /// The same IEEE steps as diamond_angle: 2 - copysign(1 + x / (|x| + |y|), y).
   /// (Bit operations on integer lanes: the floating-point ones need AVX-512 DQ.)
@@ -540,7 +524,7 @@ template <class Kernel>
       Point<2> q{{p[0] + vx * scale, p[1] + vy * scale}};
       if (seam) q = domain.wrap(q);
       const bool fits =
-          domain.contains(q) && far_enough(p, q) && Kernel::clear_of_neighbours(nb, q, r2, seam, domain);
+          domain.contains(q) && far_enough(p, q) && Kernel::clear_of_neighbours(nb, points, q, r2, seam, domain);
       if (!fits) {
         // Only rounding at an arc's end or at a wall gets here: drop a sliver
         // around t, twice as wide each time (6.7e-6 in all, at most 1.4e-5 rad; an arc of w rad
@@ -554,8 +538,6 @@ template <class Kernel>
       }
       // The new sample is a neighbour for the rest of p's circle.
       nb.index[nb.count] = append_sample(points, grid, q);
-      nb.sx[nb.count] = q[0];
-      nb.sy[nb.count] = q[1];
       ++nb.count;
       // It blocks exactly +-60 degrees of the circle.
       arcs.remove(detail::diamond_arc(0.5 * vx + sin60 * vy, 0.5 * vy - sin60 * vx, 0.5 * vx - sin60 * vy,
