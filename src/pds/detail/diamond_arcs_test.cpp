@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -81,6 +82,36 @@ TEST(FreeArcs, ComplementAndCutsMatchBruteForce) {
       ASSERT_NE(is_free, is_blocked) << "trial " << trial << " t " << t;
     }
     EXPECT_EQ(free.empty(), free.arcs().empty());
+  }
+}
+
+// The sort-free complement computes the same free arcs as the sorted sweep,
+// bit for bit (only their order differs), including arcs that share a start.
+TEST(FreeArcs, UnsortedComplementEqualsTheSortedSweep) {
+  Rng rng(12);
+  const auto by_start = [](std::vector<DiamondArc> arcs) {
+    std::sort(arcs.begin(), arcs.end(), [](const DiamondArc& a, const DiamondArc& b) {
+      return a.lo < b.lo || (a.lo == b.lo && a.len < b.len);
+    });
+    return arcs;
+  };
+  for (int trial = 0; trial < 5000; ++trial) {
+    std::vector<DiamondArc> blocked(rng.below(FreeArcs::kMaxBlocked + 1));
+    for (auto& a : blocked) a = {rng.uniform(0.0, 4.0), rng.uniform(0.0, 1.2)};
+    if (blocked.size() > 2 && trial % 3 == 0) blocked[1].lo = blocked[0].lo;  // a shared start
+    std::vector<double> lo, len;
+    for (const auto& a : blocked) lo.push_back(a.lo), len.push_back(a.len);
+    FreeArcs sorted, unsorted;
+    std::vector<DiamondArc> copy = blocked;
+    sorted.assign_complement(copy.data(), static_cast<int>(copy.size()));
+    unsorted.assign_complement_unsorted(lo.data(), len.data(), static_cast<int>(lo.size()));
+    const auto a = by_start({sorted.arcs().begin(), sorted.arcs().end()});
+    const auto b = by_start({unsorted.arcs().begin(), unsorted.arcs().end()});
+    ASSERT_EQ(a.size(), b.size()) << "trial " << trial;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_EQ(a[i].lo, b[i].lo) << "trial " << trial;
+      ASSERT_EQ(a[i].len, b[i].len) << "trial " << trial;
+    }
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "nn_statistics.h"
 #include "pds/analysis/distance.h"
 #include "pds/analysis/maximality.h"
@@ -35,6 +37,25 @@ TEST(DunbarHumphreys, SmallToriStayExactAndMaximal) {
       const auto points = dunbar_humphreys({r}, domain, seed);
       EXPECT_GE(min_distance_brute_force(points, domain).distance, r) << "r " << r << " seed " << seed;
       EXPECT_TRUE(check_maximality(points, domain, r).maximal) << "r " << r << " seed " << seed;
+    }
+  }
+}
+
+// The AVX-512 neighbourhood kernel and the scalar one make the same points,
+// bit for bit (same seed, same bytes on every processor), in boxes and on
+// tori, large and small, near walls and seams.
+TEST(DunbarHumphreys, VectorKernelMatchesScalarKernelBitForBit) {
+  if (!detail::dunbar_humphreys_has_vector_kernel()) GTEST_SKIP() << "no AVX-512 (x86-64-v4) here";
+  for (bool torus : {false, true}) {
+    const Domain<2> domain{{{0.1, -0.2}}, {{1.4, 0.9}}, torus};
+    for (double r : {0.004, 0.02, 0.13}) {
+      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+        const auto scalar = detail::dunbar_humphreys_boundary({r}, domain, seed, false);
+        const auto vector = detail::dunbar_humphreys_boundary({r}, domain, seed, true);
+        ASSERT_EQ(scalar.size(), vector.size()) << domain << " r " << r << " seed " << seed;
+        EXPECT_EQ(std::memcmp(scalar.data(), vector.data(), scalar.size() * sizeof(scalar[0])), 0)
+            << domain << " r " << r << " seed " << seed;
+      }
     }
   }
 }
