@@ -19,7 +19,8 @@ struct WeiParams {
   int trials = 2;
   // Grid levels, in [1, 10]: level 0 has cells of edge <= radius/sqrt(D); each
   // further level halves them and retries only in cells no single disk covers.
-  int levels = 5;
+  int levels = 10;
+  int windows = 16;
   int threads = 0;                               // worker threads, 0 = all hardware threads; never changes the output
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
 };

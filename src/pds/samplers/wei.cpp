@@ -60,6 +60,55 @@ namespace pds {
 namespace {
 
 constexpr int kMaxLevels = 10;
+constexpr int kMaxWindows = 1000;
+
+/// One of the `count` time windows of a pass. A cell with `active` active
+/// (sub)cells throws a Poisson(active / count) number of darts in it, so over
+/// a pass every active (sub)cell receives darts at rate one, at Poisson times,
+/// as in dart throwing. The count comes from a hash of (key, cell), key being
+/// drawn from (seed, level, pass, window): no state, no generator, and nothing
+/// but the seed and the cell decides it.
+class Window {
+ public:
+  Window(int index, int count, std::uint64_t key)
+      : index_(index), key_(key), lambda_(1.0 / count), p0_(std::exp(-lambda_)) {}
+
+  int index() const { return index_; }
+
+  int darts(std::size_t cell, std::size_t active) const {
+    const std::uint64_t h = mix64(key_ ^ mix64(cell + 0x9e3779b97f4a7c15ULL));
+    const double u = static_cast<double>(h >> 11) * 0x1.0p-53;
+    if (active == 1 && u < p0_) return 0;  // the common case: one test
+    return poisson(u, lambda_ * static_cast<double>(active), h);
+  }
+
+ private:
+  // Poisson(lambda) by inversion of u (lambda <= 32), else as a sum of
+  // Poisson(lambda / parts) drawn from a generator seeded by h.
+  static int poisson(double u, double lambda, std::uint64_t h) {
+    if (lambda <= 32.0) return invert(u, lambda);
+    const int parts = static_cast<int>(std::ceil(lambda / 32.0));
+    Rng rng(h);
+    int n = 0;
+    for (int i = 0; i < parts; ++i) n += invert(rng.uniform(), lambda / parts);
+    return n;
+  }
+  static int invert(double u, double lambda) {
+    double p = std::exp(-lambda), cdf = p;
+    int n = 0;
+    // The bound stops rounding from running the sum forever (P < 1e-15 beyond it).
+    while (u >= cdf && n < 4 * static_cast<int>(lambda) + 40) {
+      ++n;
+      p *= lambda / n;
+      cdf += p;
+    }
+    return n;
+  }
+
+  int index_;
+  std::uint64_t key_;
+  double lambda_, p0_;
+};
 
 /// A cell of a finer level: its level-0 cell and its position inside it.
 struct FineCell {
@@ -176,9 +225,9 @@ class WeiSampler {
   }
 
   /// Calls f(sample) for the samples of the cells within reach of `cell`;
-  /// f returns false to stop.
+  /// f returns false to stop. Returns false if f stopped it.
   template <class F>
-  void for_each_near(const std::array<int, D>& cell, F&& f) const {
+  bool for_each_near(const std::array<int, D>& cell, F&& f) const {
     std::array<int, D> first, count, offset{};
     for (int i = 0; i < D; ++i) {
       int a = cell[i] - reach_[i], b = cell[i] + reach_[i];
@@ -208,11 +257,11 @@ class WeiSampler {
           c[i] = first[i] + offset[i];
           c[i] += c[i] < 0 ? n_[i] : (c[i] >= n_[i] ? -n_[i] : 0);
         }
-        if (!f(sample(c, o))) return;
+        if (!f(sample(c, o))) return false;
       }
       int axis = 0;
       while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
-      if (axis == D) return;
+      if (axis == D) return true;
     }
   }
 
@@ -238,10 +287,12 @@ class WeiSampler {
     }
   }
 
-  /// The dart of `pass` in one cell; stores it and returns true if it fits.
-  bool throw_dart(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level, int pass,
-                  const std::vector<Point<D>>& near) {
-    Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, sub, static_cast<std::uint64_t>(pass)});
+  /// A dart drawn from `rng` in sub-cell `sub` of `cell` at `level`; stores it
+  /// and returns true if it fits. `fits(q)` says whether the dart q is at
+  /// distance >= r from every sample.
+  template <class Fits>
+  bool throw_dart(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level, Rng& rng,
+                  Fits&& fits) {
     Point<D> lo, hi, x;
     sub_bounds(c, sub, level, lo, hi);
     for (int i = 0; i < D; ++i) x[i] = rng.uniform(lo[i], hi[i]);
@@ -256,23 +307,31 @@ class WeiSampler {
     }
     if (!inside) return false;
     const Point<D> q = sample(c, o);
-    if (!domain_.contains(q) || !free(q, near)) return false;
+    if (!domain_.contains(q) || !fits(q)) return false;
     grid_[cell] = o;
     return true;
   }
 
-  /// The phase groups of a pass in a random order drawn from (seed, level, pass).
-  std::vector<std::size_t> group_order(int level, int pass) const {
+  /// The phase groups of a window in a random order drawn from (seed, level,
+  /// pass, window).
+  std::vector<std::size_t> group_order(int level, int pass, int window) const {
     std::vector<std::size_t> order(group_count());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    Rng rng(seed_, {static_cast<std::uint64_t>(level), static_cast<std::uint64_t>(pass), ~std::uint64_t{0}});
+    Rng rng(seed_, {static_cast<std::uint64_t>(level), static_cast<std::uint64_t>(pass),
+                    static_cast<std::uint64_t>(window), ~std::uint64_t{0}});
     for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
     return order;
   }
 
+  /// The generator of the darts of `cell` in one window.
+  Rng dart_rng(int level, std::size_t cell, int pass, int window) const {
+    return Rng(seed_, {static_cast<std::uint64_t>(level), cell, static_cast<std::uint64_t>(pass),
+                       static_cast<std::uint64_t>(window)});
+  }
+
   /// Level 0, one phase group: every cell whose coordinates fall in the
   /// group's coordinate lists, enumerated without building a cell list.
-  void run_level0_group(std::size_t g, int pass) {
+  void run_level0_group(std::size_t g, int pass, const Window& window) {
     std::array<const std::vector<int>*, D> lists;
     std::size_t total = 1;
     for (int i = 0; i < D; ++i) {
@@ -282,30 +341,53 @@ class WeiSampler {
     }
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 256), [&](const auto& range) {
       std::vector<Point<D>> near;
+      // Position u in the product of the lists, decoded once per chunk and
+      // then stepped like an odometer (axis 0 fastest).
+      std::array<std::size_t, D> at;
+      std::size_t rest = range.begin();
+      for (int i = 0; i < D; ++i) {
+        at[i] = rest % lists[i]->size();
+        rest /= lists[i]->size();
+      }
       for (std::size_t u = range.begin(); u != range.end(); ++u) {
         std::array<int, D> c;
-        std::size_t rest = u, cell = 0;
+        std::size_t cell = 0;
         for (int i = 0; i < D; ++i) {
-          c[i] = (*lists[i])[rest % lists[i]->size()];
-          rest /= lists[i]->size();
+          c[i] = (*lists[i])[at[i]];
           cell += static_cast<std::size_t>(c[i]) * stride_[i];
         }
+        for (int i = 0; i < D && ++at[i] == lists[i]->size(); ++i) at[i] = 0;
         if (!std::isnan(grid_[cell][0])) continue;
-        gather(c, near);
-        throw_dart(cell, c, 0, 0, pass, near);
+        const int darts = window.darts(cell, 1);
+        if (darts == 0) continue;
+        Rng rng = dart_rng(0, cell, pass, window.index());
+        // Each dart is tested against the neighbours as they are read,
+        // stopping at the first conflict (no list to gather).
+        for (int d = 0; d < darts; ++d)
+          if (throw_dart(cell, c, 0, 0, rng, [&](const Point<D>& q) {
+                return for_each_near(c, [&](const Point<D>& s) { return domain_.distance2(q, s) >= r2_; });
+              }))
+            break;
       }
     });
   }
 
+  /// k passes, each cut into W windows; in a window the phase groups run one
+  /// after another in a random order, the cells of a group in parallel.
   void run_level(int level) {
     for (int pass = 0; pass < params_.trials; ++pass)
-      for (const std::size_t g : group_order(level, pass)) run_group(level, pass, g);
+      for (int w = 0; w < params_.windows; ++w) {
+        const auto l = static_cast<std::uint64_t>(level), p = static_cast<std::uint64_t>(pass);
+        const Window window(w, params_.windows, Rng(seed_, {l, p, static_cast<std::uint64_t>(w), ~std::uint64_t{1}}).next());
+        for (const std::size_t g : group_order(level, pass, w)) run_group(level, pass, window, g);
+      }
   }
 
-  /// One pass over one phase group: one dart in each cell without a sample.
-  void run_group(int level, int pass, std::size_t g) {
+  /// One window of a pass over one phase group: the darts of the cells
+  /// without a sample.
+  void run_group(int level, int pass, const Window& window, std::size_t g) {
     if (level == 0) {
-      run_level0_group(g, pass);
+      run_level0_group(g, pass, window);
       return;
     }
     // active_ is sorted by group, and within a group the fine cells of one
@@ -314,7 +396,6 @@ class WeiSampler {
     // need be), so chunking never changes what is computed.
     const std::size_t begin = group_begin_[g], end = group_begin_[g + 1];
     tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 256), [&](const auto& range) {
-      std::vector<std::uint32_t> order;
       std::vector<Point<D>> near;
       std::size_t i = range.begin();
       while (i < range.end() && i > begin && active_[i].parent == active_[i - 1].parent) ++i;
@@ -322,19 +403,21 @@ class WeiSampler {
         const std::uint32_t cell = active_[i].parent;
         std::size_t j = i;
         while (j < end && active_[j].parent == cell) ++j;
-        if (!std::isnan(grid_[cell][0])) {  // filled by an earlier pass
+        if (!std::isnan(grid_[cell][0])) {  // filled earlier
           i = j;
           continue;
         }
-        const auto c = coords(cell);
-        gather(c, near);
-        // The active fine cells of this level-0 cell, in a random order.
-        order.resize(j - i);
-        std::iota(order.begin(), order.end(), static_cast<std::uint32_t>(i));
-        Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, static_cast<std::uint64_t>(pass), ~std::uint64_t{0}});
-        for (std::size_t n = order.size(); n > 1; --n) std::swap(order[n - 1], order[rng.below(n)]);
-        for (const std::uint32_t a : order)
-          if (throw_dart(cell, c, active_[a].sub, level, pass, near)) break;
+        const int darts = window.darts(cell, j - i);
+        if (darts > 0) {
+          const auto c = coords(cell);
+          gather(c, near);
+          // Each dart in one of the cell's active fine cells, chosen uniformly.
+          Rng rng = dart_rng(level, cell, pass, window.index());
+          for (int d = 0; d < darts; ++d)
+            if (throw_dart(cell, c, active_[i + rng.below(j - i)].sub, level, rng,
+                           [&](const Point<D>& q) { return free(q, near); }))
+              break;
+        }
         i = j;
       }
     });
@@ -448,6 +531,9 @@ PointSet<D> wei(const WeiParams& params, const Domain<D>& domain, std::uint64_t 
   if (params.levels < 1 || params.levels > kMaxLevels)
     throw InvalidArgument("wei: levels must be in [1, " + std::to_string(kMaxLevels) + "], got " +
                           std::to_string(params.levels));
+  if (params.windows < 1 || params.windows > kMaxWindows)
+    throw InvalidArgument("wei: windows must be in [1, " + std::to_string(kMaxWindows) + "], got " +
+                          std::to_string(params.windows));
   if (params.threads < 0)
     throw InvalidArgument("wei: threads must be 0 (all) or positive, got " + std::to_string(params.threads));
   return WeiSampler<D>(params, domain, seed).run();
@@ -467,12 +553,16 @@ const Method& wei_method() {
       .params = {{"k", double(WeiParams{}.trials), 1, 1000, true,
                   "dart passes per level (each visits the phase groups in a random order, one dart per empty cell)"},
                  {"levels", double(WeiParams{}.levels), 1, kMaxLevels, true,
-                  "grid levels (each halves the cells of the last and retries where no single disk covers)"}},
+                  "grid levels (each halves the cells of the last and retries where no single disk covers)"},
+                 {"windows", double(WeiParams{}.windows), 1, kMaxWindows, true,
+                  "time windows of the first pass: each cell throws its first dart in a random one of them"}},
       .run =
           [](const GenerateRequest& r) {
             return run_typed(r, [&](const auto& domain) {
               const WeiParams params{*r.radius, static_cast<int>(r.param("k", WeiParams{}.trials)),
-                                     static_cast<int>(r.param("levels", WeiParams{}.levels)), r.threads, r.max_points};
+                                     static_cast<int>(r.param("levels", WeiParams{}.levels)),
+                                     static_cast<int>(r.param("windows", WeiParams{}.windows)), r.threads,
+                                     r.max_points};
               return wei(params, domain, r.seed);
             });
           },
