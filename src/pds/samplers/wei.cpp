@@ -69,8 +69,8 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pds/error.h"
@@ -462,7 +462,8 @@ class WeiSampler {
   void run_group(int level, int pass, int window, std::size_t bucket) {
     const std::size_t begin = bucket_[bucket], end = bucket_[bucket + 1];
     if (begin == end) return;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 256), [&](const auto& range) {
+    // Small chunks: at the finer levels a bucket holds a few hundred darts.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 64), [&](const auto& range) {
       std::vector<Point<D>> near;
       std::size_t i = range.begin();
       while (i < range.end() && i > begin && events_[i] == events_[i - 1]) ++i;
