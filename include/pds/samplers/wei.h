@@ -26,7 +26,8 @@ struct WeiParams {
   // phase groups in a random order inside each, so only darts of neighbouring
   // cells in the same window are ordered by group rather than time. 1 is a
   // pass in one go, whose first group fills a lattice (spectral spikes at
-  // n0/3 cycles per extent); the spikes' power falls as about N / windows^3.
+  // n0/3 cycles per extent); the spikes' power falls fast with windows and
+  // grows with N (64 leaves none measurable at 7 10^5 points; docs/wei.md).
   // The darts are sorted by window, not re-visited, so the cost grows only
   // until each dart has a window of its own (64 costs about 1.5x 1 in CPU time
   // at 10^6 points, 1000 about 1.8x; docs/wei.md).

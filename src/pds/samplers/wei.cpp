@@ -30,7 +30,9 @@
 // a window the groups run in a random order, the cells of a group in parallel.
 // Only darts of neighbouring cells that fall in the same window are ordered by
 // group instead of time, so the group's advantage, and with it the lattice,
-// shrinks with W (the spike power as about N / W^3, measured); at W = 64 the
+// shrinks fast with W (the residual spike power about 6 times less from W = 16
+// to 32, measured; a coherent lattice's power grows in proportion to N, so
+// far larger sets want more windows); at W = 64 the
 // radial power equals maximal dart throwing's at r = 0.02 in every annulus
 // (tested), and at N = 7 10^5 the power at the lattice frequencies themselves
 // is at the noise level (4 sets; W = 16 leaves them 3-30 times too high).
