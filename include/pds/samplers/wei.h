@@ -12,14 +12,26 @@ namespace pds {
 
 struct WeiParams {
   double radius = 0.01;  // minimum distance between samples, > 0
-  // k: dart passes per level, >= 1 (each pass visits every phase group, in a
-  // random order, and throws one dart per empty cell). With levels = 5, k = 2
-  // gives the density and nearest-neighbour distances of maximal dart throwing
-  // (measured, docs/wei.md); more levels pack denser than dart throwing can.
+  // k: dart passes per level, >= 1. A pass is one unit of dart-throwing time:
+  // each active (sub)cell receives a Poisson(1) number of darts at uniform
+  // times in it (see windows).
   int trials = 2;
   // Grid levels, in [1, 10]: level 0 has cells of edge <= radius/sqrt(D); each
   // further level halves them and retries only in cells no single disk covers.
-  int levels = 5;
+  // With the defaults the output has the density, nearest-neighbour distances
+  // and radial spectrum of maximal dart throwing (measured, docs/wei.md);
+  // fewer levels leave it less dense.
+  int levels = 10;
+  // Time windows per pass, in [1, 1000]: windows run in time order and the
+  // phase groups in a random order inside each, so only darts of neighbouring
+  // cells in the same window are ordered by group rather than time. 1 is a
+  // pass in one go, whose first group fills a lattice (spectral spikes at
+  // n0/3 cycles per extent); the spikes' power falls fast with windows and
+  // grows with N (64 leaves none measurable at 7 10^5 points; docs/wei.md).
+  // The darts are sorted by window, not re-visited, so the cost grows only
+  // until each dart has a window of its own (64 costs about 1.5x 1 in CPU time
+  // at 10^6 points, 1000 about 1.8x; docs/wei.md).
+  int windows = 64;
   int threads = 0;                               // worker threads, 0 = all hardware threads; never changes the output
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
 };
@@ -28,18 +40,20 @@ struct WeiParams {
 ///
 /// A grid of cells of edge <= radius/sqrt(D) (one sample per cell at most) is
 /// split into phase groups whose cells are far enough apart that their darts
-/// cannot conflict. Each of `trials` passes visits the groups one after
-/// another in a random order, the cells of a group in parallel, one dart per
-/// empty cell. Finer levels halve the cells and retry where no single disk
-/// covers a cell yet. The spectrum keeps spikes of the phase-group lattice
+/// cannot conflict. Each of `trials` passes is cut into `windows` time
+/// windows; every empty cell throws a Poisson number of darts at uniform times
+/// in the pass, as dart throwing would, and in each window the groups run one
+/// after another in a random order, the cells of a group in parallel. Finer
+/// levels halve the cells and retry where no single disk covers a cell yet.
+/// With the defaults the radial spectrum is maximal dart throwing's
 /// (docs/wei.md).
 /// Guarantees: all pairs at least `radius` apart; every point in [lo, hi);
-/// same seed, same points for every thread count (each cell's generator comes
-/// from (seed, level, cell), never from the thread). Not maximal: small gaps
-/// covered only by the union of several disks can remain (see docs/wei.md for
-/// the measured coverage and rho).
+/// same seed, same points for every thread count (each cell's darts come from
+/// (seed, level, cell, pass, window), never from the thread). Not maximal:
+/// small gaps covered only by the union of several disks can remain (see
+/// docs/wei.md for the measured coverage and rho).
 /// Invalid: radius not positive/finite or over the point budget, trials < 1,
-/// levels outside [1, 10], threads < 0.
+/// levels outside [1, 10], windows outside [1, 1000], threads < 0.
 template <int D>
 PointSet<D> wei(const WeiParams& params, const Domain<D>& domain, std::uint64_t seed);
 

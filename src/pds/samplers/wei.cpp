@@ -7,38 +7,58 @@
 // - Phase groups: cells whose indices agree modulo m = floor(r/s) + 2 along
 //   every axis. Two cells of a group are at least (m - 1) s > r apart, so their
 //   darts never conflict and the cells of a group are processed in parallel;
-//   the groups are visited one after another.
-// - k trials per cell, spread over k passes as in the paper: each pass visits
-//   every phase group, in a random order drawn afresh for each (level, pass),
-//   and each cell still without a sample throws one uniform dart inside itself,
-//   kept if it is at distance >= r from every sample in the neighbouring cells.
-//   (Wei: a fixed group order, or k darts in one visit, biases the pattern.)
+//   the groups are visited one after another, in a random order.
+// - k trials per cell, spread over k passes, each visiting every group.
 // - Multi-resolution: after a level, each cell that is still empty is split
 //   into 2^D children; children covered by a single disk are dropped (no dart
-//   could land there) and the others get k passes at the next level (in a
-//   pass, a level-0 cell's active children take one dart each, in a random
-//   order, until one fits). A dart in a child is stored in its level-0 cell,
-//   so the fine cells of one level-0 cell are visited in turn by one task, and
-//   the phase groups stay those of level 0 at every level.
+//   could land there) and the others get k passes at the next level. A dart in
+//   a child is stored in its level-0 cell, so the fine cells of one level-0
+//   cell are handled by one task, and the phase groups stay those of level 0
+//   at every level.
 //
-// Determinism: each dart's generator is Rng(seed, level, cell, sub, pass);
-// the group order comes from Rng(seed, level, pass); no decision depends on
-// the thread count or schedule (cells of one group never read what another writes: a dart looks
-// at cells within floor(r/s) + 1 of its own, and same-group cells are farther).
-// The output lists samples in level-0 cell order.
+// Departure from the paper: time windows. In the paper each pass visits the
+// groups once, so the first group visited finds all its cells empty and fills
+// nearly every one: a jittered lattice of period m cells holding about a third
+// of the samples, seen as spikes in the spectrum at n0/m cycles per extent
+// (measured, docs/wei.md), whatever the group order. Dart throwing has no such
+// first group: each place receives darts at random times. So here every pass
+// stands for one unit of dart-throwing time and is cut into W windows (the
+// `windows` parameter, default 64). For each pass every empty level-0 cell
+// draws its darts as dart throwing would: a Poisson(a) number, a = its number
+// of active (sub)cells (1 at level 0), each at a uniform time, i.e. in a
+// uniform window, in a uniform active sub-cell. Windows run in time order; in
+// a window the groups run in a random order, the cells of a group in parallel.
+// Only darts of neighbouring cells that fall in the same window are ordered by
+// group instead of time, so the group's advantage, and with it the lattice,
+// shrinks fast with W (the residual spike power about 6 times less from W = 16
+// to 32, measured; a coherent lattice's power grows in proportion to N, so
+// far larger sets want more windows); at W = 64 the
+// radial power equals maximal dart throwing's at r = 0.02 in every annulus
+// (tested), and at N = 7 10^5 the power at the lattice frequencies themselves
+// is at the noise level (4 sets; W = 16 leaves them 3-30 times too high).
+// The darts of a pass are drawn first and sorted by (window, group) (a
+// counting sort over fixed chunks), so the cost is per dart, not per window.
+// With faithful dart-throwing order the finer levels converge more slowly
+// to saturation than with the lattice, hence 10 levels by default.
+//
+// Determinism: the number and windows of a cell's darts come from a hash of
+// (seed, level, pass, cell), the darts from Rng(seed, level, cell, pass,
+// window), the group order from Rng(seed, level, pass, window); no decision
+// depends on the thread count or schedule (cells of one group never read what
+// another writes: a dart looks at cells within floor(r/s) + 1 of its own, and
+// same-group cells are farther). The output lists samples in level-0 cell
+// order.
 //
 // Guarantees: minimum distance r; not maximal (a region covered only by the
 // union of several disks keeps its cells active but cannot be filled; gaps
-// remain where k trials per level all missed); coverage and rho are measured
-// in docs/wei.md. Even with the paper's traversal the first pass fills nearly
-// every cell of the first group, a jittered lattice of period m cells that
-// stays visible as spikes in the spectrum at n0/m cycles per extent
-// (measured, docs/wei.md; tested).
+// remain where the darts of a level all missed); coverage, rho and the
+// spectrum are measured in docs/wei.md.
 //
-// Complexity: O(N k) dart tests at level 0, and each finer level visits only
-// the cells that are still uncovered: O(N) work for a fixed number of levels,
-// k 3^D barriers per level. Memory: one float offset per level-0 cell (about 3
-// per sample in 2D) plus the active fine cells.
+// Complexity: O(N k) darts at level 0, and each finer level visits only the
+// cells that are still uncovered: O(N) work for a fixed number of levels,
+// k W 3^D barriers per level (empty ones skipped). Memory: one float offset
+// per level-0 cell (about 3 per sample in 2D), the active fine cells, and
+// during a pass one 4-byte entry per dart (about one per empty cell).
 #include "pds/samplers/wei.h"
 
 #include <tbb/blocked_range.h>
@@ -50,7 +70,9 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pds/error.h"
@@ -60,6 +82,58 @@ namespace pds {
 namespace {
 
 constexpr int kMaxLevels = 10;
+constexpr int kMaxWindows = 1000;
+// The most level-0 cells a neighbourhood spans along an axis: 2 reach + 1
+// with reach <= floor(2 sqrt(D)) + 1 (cells of edge >= r / (2 sqrt(D)) when
+// an axis has two or more), or the whole axis.
+constexpr std::size_t kMaxSpan = 16;
+
+/// Poisson(lambda) by inversion of u (lambda <= 32), else as a sum of
+/// Poisson(lambda / parts) drawn from a generator seeded by h.
+int poisson(double u, double lambda, std::uint64_t h) {
+  auto invert = [](double v, double l) {
+    double p = std::exp(-l), cdf = p;
+    int n = 0;
+    // The bound stops rounding from running the sum forever (P < 1e-15 beyond it).
+    while (v >= cdf && n < 4 * static_cast<int>(l) + 40) {
+      ++n;
+      p *= l / n;
+      cdf += p;
+    }
+    return n;
+  };
+  if (lambda <= 32.0) return invert(u, lambda);
+  const int parts = static_cast<int>(std::ceil(lambda / 32.0));
+  Rng rng(h);
+  int n = 0;
+  for (int i = 0; i < parts; ++i) n += invert(rng.uniform(), lambda / parts);
+  return n;
+}
+
+/// The darts of one unit (a level-0 cell, with its active fine cells above
+/// level 0) in one pass: a Poisson(active) number, each at a uniform time,
+/// i.e. in a uniform one of the pass's windows, so every active cell gets
+/// darts at rate one at Poisson times, as in dart throwing. All of it comes
+/// from a hash of (key, cell), key being drawn from (seed, level, pass): no
+/// state, no generator, and nothing but the seed and the cell decides it.
+class Darts {
+ public:
+  Darts(std::uint64_t key, std::size_t cell, std::size_t active, int windows)
+      : h_(mix64(key ^ mix64(cell + 0x9e3779b97f4a7c15ULL))), windows_(static_cast<std::uint64_t>(windows)) {
+    const double u = static_cast<double>(h_ >> 11) * 0x1.0p-53;
+    count_ = active == 1 && u < kExpMinusOne ? 0 : poisson(u, static_cast<double>(active), h_);
+  }
+  int count() const { return count_; }
+  int window(int dart) const {
+    const std::uint64_t h = mix64(h_ + static_cast<std::uint64_t>(dart + 1) * 0x9e3779b97f4a7c15ULL);
+    return static_cast<int>((static_cast<u128>(h) * windows_) >> 64);
+  }
+
+ private:
+  static constexpr double kExpMinusOne = 0.36787944117144233;  // P(no dart) for one cell
+  std::uint64_t h_, windows_;
+  int count_;
+};
 
 /// A cell of a finer level: its level-0 cell and its position inside it.
 struct FineCell {
@@ -82,6 +156,8 @@ class WeiSampler {
       total *= n_[i];
       // Cells within `reach` of a dart's cell hold every sample closer than r.
       reach_[i] = static_cast<int>(std::floor(r / edge_[i])) + 1;
+      if (n_[i] > static_cast<int>(kMaxSpan) && 2 * reach_[i] + 1 > static_cast<int>(kMaxSpan))
+        throw std::logic_error("wei: neighbourhood wider than kMaxSpan");
       period_[i] = reach_[i] + 1;
       // On a torus the last n mod period cells each get a group of their own
       // along this axis, so that no two cells of a group meet across the seam.
@@ -176,10 +252,13 @@ class WeiSampler {
   }
 
   /// Calls f(sample) for the samples of the cells within reach of `cell`;
-  /// f returns false to stop.
+  /// f returns false to stop. Returns false if f stopped it.
   template <class F>
-  void for_each_near(const std::array<int, D>& cell, F&& f) const {
-    std::array<int, D> first, count, offset{};
+  bool for_each_near(const std::array<int, D>& cell, F&& f) const {
+    // The (wrapped) coordinates of the block along each axis, then the
+    // block's cells with axis 0 innermost.
+    std::array<std::array<int, kMaxSpan>, D> at;
+    std::array<int, D> count, offset{};
     for (int i = 0; i < D; ++i) {
       int a = cell[i] - reach_[i], b = cell[i] + reach_[i];
       if (domain_.periodic) {
@@ -188,31 +267,27 @@ class WeiSampler {
         a = std::max(a, 0);
         b = std::min(b, n_[i] - 1);
       }
-      first[i] = a;
       count[i] = b - a + 1;
+      for (int k = 0; k < count[i]; ++k) {
+        const int c = a + k;
+        at[i][static_cast<std::size_t>(k)] = c < 0 ? c + n_[i] : (c >= n_[i] ? c - n_[i] : c);
+      }
     }
+    std::array<int, D> c;
     while (true) {
-      std::size_t index = 0;
-      for (int i = 0; i < D; ++i) {
-        int c = first[i] + offset[i];
-        if (c < 0)
-          c += n_[i];
-        else if (c >= n_[i])
-          c -= n_[i];
-        index += static_cast<std::size_t>(c) * stride_[i];
+      std::size_t row = 0;
+      for (int i = 1; i < D; ++i) {
+        c[i] = at[i][static_cast<std::size_t>(offset[i])];
+        row += static_cast<std::size_t>(c[i]) * stride_[i];
       }
-      const Offset& o = grid_[index];
-      if (!std::isnan(o[0])) {
-        std::array<int, D> c;
-        for (int i = 0; i < D; ++i) {
-          c[i] = first[i] + offset[i];
-          c[i] += c[i] < 0 ? n_[i] : (c[i] >= n_[i] ? -n_[i] : 0);
-        }
-        if (!f(sample(c, o))) return;
+      for (int k = 0; k < count[0]; ++k) {
+        c[0] = at[0][static_cast<std::size_t>(k)];
+        const Offset& o = grid_[row + static_cast<std::size_t>(c[0])];
+        if (!std::isnan(o[0]) && !f(sample(c, o))) return false;
       }
-      int axis = 0;
+      int axis = 1;
       while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
-      if (axis == D) return;
+      if (axis == D) return true;
     }
   }
 
@@ -238,10 +313,12 @@ class WeiSampler {
     }
   }
 
-  /// The dart of `pass` in one cell; stores it and returns true if it fits.
-  bool throw_dart(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level, int pass,
-                  const std::vector<Point<D>>& near) {
-    Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, sub, static_cast<std::uint64_t>(pass)});
+  /// A dart drawn from `rng` in sub-cell `sub` of `cell` at `level`; stores it
+  /// and returns true if it fits. `fits(q)` says whether the dart q is at
+  /// distance >= r from every sample.
+  template <class Fits>
+  bool throw_dart(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level, Rng& rng,
+                  Fits&& fits) {
     Point<D> lo, hi, x;
     sub_bounds(c, sub, level, lo, hi);
     for (int i = 0; i < D; ++i) x[i] = rng.uniform(lo[i], hi[i]);
@@ -256,88 +333,184 @@ class WeiSampler {
     }
     if (!inside) return false;
     const Point<D> q = sample(c, o);
-    if (!domain_.contains(q) || !free(q, near)) return false;
+    if (!domain_.contains(q) || !fits(q)) return false;
     grid_[cell] = o;
     return true;
   }
 
-  /// The phase groups of a pass in a random order drawn from (seed, level, pass).
-  std::vector<std::size_t> group_order(int level, int pass) const {
+  /// The phase groups of a window in a random order drawn from (seed, level,
+  /// pass, window).
+  std::vector<std::size_t> group_order(int level, int pass, int window) const {
     std::vector<std::size_t> order(group_count());
     std::iota(order.begin(), order.end(), std::size_t{0});
-    Rng rng(seed_, {static_cast<std::uint64_t>(level), static_cast<std::uint64_t>(pass), ~std::uint64_t{0}});
+    Rng rng(seed_, {static_cast<std::uint64_t>(level), static_cast<std::uint64_t>(pass),
+                    static_cast<std::uint64_t>(window), ~std::uint64_t{0}});
     for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
     return order;
   }
 
-  /// Level 0, one phase group: every cell whose coordinates fall in the
-  /// group's coordinate lists, enumerated without building a cell list.
-  void run_level0_group(std::size_t g, int pass) {
-    std::array<const std::vector<int>*, D> lists;
+  /// The generator of the darts of `cell` in one window.
+  Rng dart_rng(int level, std::size_t cell, int pass, int window) const {
+    return Rng(seed_, {static_cast<std::uint64_t>(level), cell, static_cast<std::uint64_t>(pass),
+                       static_cast<std::uint64_t>(window)});
+  }
+
+  /// The units of group g: at level 0 the cells whose coordinates fall in
+  /// the group's coordinate lists (numbered 0 .. count - 1 in the product of
+  /// the lists); above, the runs of active_ (numbered by their index there).
+  std::pair<std::size_t, std::size_t> unit_range(int level, std::size_t g) const {
+    if (level > 0) return {group_begin_[g], group_begin_[g + 1]};
     std::size_t total = 1;
+    for (int i = 0; i < D; ++i) {
+      total *= members_[i][g % static_cast<std::size_t>(groups_[i])].size();
+      g /= static_cast<std::size_t>(groups_[i]);
+    }
+    return {0, total};
+  }
+
+  /// Calls f(unit, cell, active) for the empty units of group g that start in
+  /// [begin, end): unit is what events_ stores (the cell at level 0, the index
+  /// of its first active fine cell above), active the number of (sub)cells.
+  template <class F>
+  void for_each_unit(int level, std::size_t g, std::size_t begin, std::size_t end, F&& f) const {
+    if (level > 0) {
+      const std::size_t group_begin = group_begin_[g], group_end = group_begin_[g + 1];
+      std::size_t i = begin;
+      while (i < end && i > group_begin && active_[i].parent == active_[i - 1].parent) ++i;
+      while (i < end) {
+        const std::uint32_t cell = active_[i].parent;
+        std::size_t j = i;
+        while (j < group_end && active_[j].parent == cell) ++j;
+        if (std::isnan(grid_[cell][0])) f(i, cell, j - i);
+        i = j;
+      }
+      return;
+    }
+    std::array<const std::vector<int>*, D> lists;
     for (int i = 0; i < D; ++i) {
       lists[i] = &members_[i][g % static_cast<std::size_t>(groups_[i])];
       g /= static_cast<std::size_t>(groups_[i]);
-      total *= lists[i]->size();
     }
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, total, 256), [&](const auto& range) {
-      std::vector<Point<D>> near;
-      for (std::size_t u = range.begin(); u != range.end(); ++u) {
-        std::array<int, D> c;
-        std::size_t rest = u, cell = 0;
-        for (int i = 0; i < D; ++i) {
-          c[i] = (*lists[i])[rest % lists[i]->size()];
-          rest /= lists[i]->size();
-          cell += static_cast<std::size_t>(c[i]) * stride_[i];
-        }
-        if (!std::isnan(grid_[cell][0])) continue;
-        gather(c, near);
-        throw_dart(cell, c, 0, 0, pass, near);
+    // Position in the product of the lists, decoded once and then stepped
+    // like an odometer (axis 0 fastest).
+    std::array<std::size_t, D> at;
+    std::size_t rest = begin;
+    for (int i = 0; i < D; ++i) {
+      at[i] = rest % lists[i]->size();
+      rest /= lists[i]->size();
+    }
+    for (std::size_t u = begin; u != end; ++u) {
+      std::size_t cell = 0;
+      for (int i = 0; i < D; ++i) cell += static_cast<std::size_t>((*lists[i])[at[i]]) * stride_[i];
+      for (int i = 0; i < D && ++at[i] == lists[i]->size(); ++i) at[i] = 0;
+      if (std::isnan(grid_[cell][0])) f(cell, cell, 1);
+    }
+  }
+
+  /// Draws the darts of every empty unit for one pass and sorts them by
+  /// window, then phase group (a counting sort over fixed chunks of units, so
+  /// that neither the result nor its order depends on the threads).
+  void schedule(int level, int pass) {
+    constexpr std::size_t kChunk = 4096;
+    if (active_.size() > std::numeric_limits<std::uint32_t>::max())
+      throw InvalidArgument("wei: more than 2^32 active fine cells; use fewer levels or a larger radius");
+    const std::size_t groups = group_count(), windows = static_cast<std::size_t>(params_.windows);
+    const std::uint64_t key =
+        Rng(seed_, {static_cast<std::uint64_t>(level), static_cast<std::uint64_t>(pass), ~std::uint64_t{1}}).next();
+    // counts[chunk_first[g] + c][w]: darts of window w in chunk c of group g;
+    // turned into write positions below.
+    std::vector<std::size_t> chunk_first(groups + 1, 0);
+    for (std::size_t g = 0; g < groups; ++g) {
+      const auto [begin, end] = unit_range(level, g);
+      chunk_first[g + 1] = chunk_first[g] + (end - begin + kChunk - 1) / kChunk;
+    }
+    std::vector<std::size_t> counts(chunk_first[groups] * windows, 0);
+    auto over_chunks = [&](auto&& per_dart) {
+      for (std::size_t g = 0; g < groups; ++g) {
+        const auto [begin, end] = unit_range(level, g);
+        tbb::parallel_for(std::size_t{0}, chunk_first[g + 1] - chunk_first[g], [&](std::size_t c) {
+          std::size_t* row = &counts[(chunk_first[g] + c) * windows];
+          const std::size_t first = begin + c * kChunk;
+          for_each_unit(level, g, first, std::min(first + kChunk, end),
+                        [&](std::size_t unit, std::size_t cell, std::size_t active) {
+                          const Darts darts(key, cell, active, params_.windows);
+                          for (int d = 0; d < darts.count(); ++d) per_dart(row, unit, darts.window(d));
+                        });
+        });
       }
-    });
+    };
+    over_chunks([](std::size_t* row, std::size_t, int w) { ++row[w]; });
+    // Buckets in (window, group) order; within one, chunks in order.
+    bucket_.assign(windows * groups + 1, 0);
+    std::size_t at = 0;
+    for (std::size_t w = 0; w < windows; ++w)
+      for (std::size_t g = 0; g < groups; ++g) {
+        bucket_[w * groups + g] = at;
+        for (std::size_t c = chunk_first[g]; c < chunk_first[g + 1]; ++c) {
+          const std::size_t n = counts[c * windows + w];
+          counts[c * windows + w] = at;
+          at += n;
+        }
+      }
+    bucket_[windows * groups] = at;
+    events_.resize(at);
+    over_chunks([&](std::size_t* row, std::size_t unit, int w) { events_[row[w]++] = static_cast<std::uint32_t>(unit); });
   }
 
-  void run_level(int level) {
-    for (int pass = 0; pass < params_.trials; ++pass)
-      for (const std::size_t g : group_order(level, pass)) run_group(level, pass, g);
-  }
-
-  /// One pass over one phase group: one dart in each cell without a sample.
-  void run_group(int level, int pass, std::size_t g) {
-    if (level == 0) {
-      run_level0_group(g, pass);
-      return;
-    }
-    // active_ is sorted by group, and within a group the fine cells of one
-    // level-0 cell are contiguous: a unit of work is such a run. A chunk
-    // processes the runs that start inside it (running past its end if
-    // need be), so chunking never changes what is computed.
-    const std::size_t begin = group_begin_[g], end = group_begin_[g + 1];
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 256), [&](const auto& range) {
-      std::vector<std::uint32_t> order;
+  /// The darts of one window of a pass in one phase group, the cells in
+  /// parallel. A run of equal entries is one unit's darts in this window; a
+  /// chunk processes the runs that start inside it, so chunking never
+  /// changes what is computed.
+  void run_group(int level, int pass, int window, std::size_t bucket) {
+    const std::size_t begin = bucket_[bucket], end = bucket_[bucket + 1];
+    if (begin == end) return;
+    // Small chunks: at the finer levels a bucket holds a few hundred darts.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 64), [&](const auto& range) {
       std::vector<Point<D>> near;
       std::size_t i = range.begin();
-      while (i < range.end() && i > begin && active_[i].parent == active_[i - 1].parent) ++i;
+      while (i < range.end() && i > begin && events_[i] == events_[i - 1]) ++i;
       while (i < range.end()) {
-        const std::uint32_t cell = active_[i].parent;
+        const std::uint32_t unit = events_[i];
         std::size_t j = i;
-        while (j < end && active_[j].parent == cell) ++j;
-        if (!std::isnan(grid_[cell][0])) {  // filled by an earlier pass
-          i = j;
+        while (j < end && events_[j] == unit) ++j;
+        const std::size_t darts = j - i;
+        i = j;
+        const std::uint32_t cell = level == 0 ? unit : active_[unit].parent;
+        if (!std::isnan(grid_[cell][0])) continue;  // filled earlier in this pass
+        const auto c = coords(cell);
+        Rng rng = dart_rng(level, cell, pass, window);
+        // A single dart is tested against the neighbours as they are read,
+        // stopping at the first conflict; several share one gathered list.
+        auto fits = [&](const Point<D>& q) {
+          return darts == 1 ? for_each_near(c, [&](const Point<D>& s) { return domain_.distance2(q, s) >= r2_; })
+                            : free(q, near);
+        };
+        if (darts > 1) gather(c, near);
+        if (level == 0) {
+          for (std::size_t d = 0; d < darts; ++d)
+            if (throw_dart(cell, c, 0, 0, rng, fits)) break;
           continue;
         }
-        const auto c = coords(cell);
-        gather(c, near);
-        // The active fine cells of this level-0 cell, in a random order.
-        order.resize(j - i);
-        std::iota(order.begin(), order.end(), static_cast<std::uint32_t>(i));
-        Rng rng(seed_, {static_cast<std::uint64_t>(level), cell, static_cast<std::uint64_t>(pass), ~std::uint64_t{0}});
-        for (std::size_t n = order.size(); n > 1; --n) std::swap(order[n - 1], order[rng.below(n)]);
-        for (const std::uint32_t a : order)
-          if (throw_dart(cell, c, active_[a].sub, level, pass, near)) break;
-        i = j;
+        std::size_t last = unit;
+        while (last < active_.size() && active_[last].parent == cell) ++last;
+        // Each dart in one of the cell's active fine cells, chosen uniformly.
+        for (std::size_t d = 0; d < darts; ++d)
+          if (throw_dart(cell, c, active_[unit + rng.below(last - unit)].sub, level, rng, fits)) break;
       }
     });
+  }
+
+  /// k passes, each cut into W windows; in a window the phase groups run one
+  /// after another in a random order, the cells of a group in parallel.
+  void run_level(int level) {
+    const std::size_t groups = group_count();
+    for (int pass = 0; pass < params_.trials; ++pass) {
+      schedule(level, pass);
+      for (int w = 0; w < params_.windows; ++w)
+        for (const std::size_t g : group_order(level, pass, w))
+          run_group(level, pass, w, static_cast<std::size_t>(w) * groups + g);
+    }
+    events_ = {};
   }
 
   /// True if one sample's disk contains the whole box [lo, hi].
@@ -436,6 +609,11 @@ class WeiSampler {
   std::vector<Offset> grid_;
   std::vector<FineCell> active_;          // this level's cells, sorted by phase group
   std::vector<std::size_t> group_begin_;  // where each group's cells start in active_
+  // The darts of the current pass, one entry per dart naming its unit (see
+  // for_each_unit), sorted by window, then group; bucket_[w * groups + g] is
+  // where window w's darts of group g start.
+  std::vector<std::uint32_t> events_;
+  std::vector<std::size_t> bucket_;
 };
 
 }  // namespace
@@ -448,6 +626,9 @@ PointSet<D> wei(const WeiParams& params, const Domain<D>& domain, std::uint64_t 
   if (params.levels < 1 || params.levels > kMaxLevels)
     throw InvalidArgument("wei: levels must be in [1, " + std::to_string(kMaxLevels) + "], got " +
                           std::to_string(params.levels));
+  if (params.windows < 1 || params.windows > kMaxWindows)
+    throw InvalidArgument("wei: windows must be in [1, " + std::to_string(kMaxWindows) + "], got " +
+                          std::to_string(params.windows));
   if (params.threads < 0)
     throw InvalidArgument("wei: threads must be 0 (all) or positive, got " + std::to_string(params.threads));
   return WeiSampler<D>(params, domain, seed).run();
@@ -460,19 +641,24 @@ const Method& wei_method() {
   static const Method method{
       .name = "wei",
       .summary =
-          "parallel Poisson disk sampling (Wei): phase groups of grid cells in random order, k passes of one dart per "
-          "cell, multi-level",
+          "parallel Poisson disk sampling (Wei): phase groups of grid cells in random order, k passes of darts at "
+          "Poisson times in time windows, multi-level",
       .citation = "L.-Y. Wei, Parallel Poisson disk sampling, ACM SIGGRAPH 2008",
       .takes_radius = true,
       .params = {{"k", double(WeiParams{}.trials), 1, 1000, true,
-                  "dart passes per level (each visits the phase groups in a random order, one dart per empty cell)"},
+                  "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},
                  {"levels", double(WeiParams{}.levels), 1, kMaxLevels, true,
-                  "grid levels (each halves the cells of the last and retries where no single disk covers)"}},
+                  "grid levels (each halves the cells of the last and retries where no single disk covers)"},
+                 {"windows", double(WeiParams{}.windows), 1, kMaxWindows, true,
+                  "time windows per pass, run in order, groups in a random order in each (1: a pass in one visit, "
+                  "whose first group leaves a lattice)"}},
       .run =
           [](const GenerateRequest& r) {
             return run_typed(r, [&](const auto& domain) {
               const WeiParams params{*r.radius, static_cast<int>(r.param("k", WeiParams{}.trials)),
-                                     static_cast<int>(r.param("levels", WeiParams{}.levels)), r.threads, r.max_points};
+                                     static_cast<int>(r.param("levels", WeiParams{}.levels)),
+                                     static_cast<int>(r.param("windows", WeiParams{}.windows)), r.threads,
+                                     r.max_points};
               return wei(params, domain, r.seed);
             });
           },
