@@ -62,8 +62,8 @@ bool dunbar_humphreys_has_vector_kernel();
 /// Boundary sampling (variant 0) with the vector kernel or the scalar one:
 /// the same points, bit for bit (for the test that says so). Asking for the
 /// vector kernel where there is none throws InvalidArgument.
-PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const Domain<2>& domain,
-                                      std::uint64_t seed, bool vector_kernel);
+PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed,
+                                      bool vector_kernel);
 }  // namespace detail
 
 }  // namespace pds

@@ -90,9 +90,8 @@ TEST(FreeArcs, ComplementAndCutsMatchBruteForce) {
 TEST(FreeArcs, UnsortedComplementEqualsTheSortedSweep) {
   Rng rng(12);
   const auto by_start = [](std::vector<DiamondArc> arcs) {
-    std::sort(arcs.begin(), arcs.end(), [](const DiamondArc& a, const DiamondArc& b) {
-      return a.lo < b.lo || (a.lo == b.lo && a.len < b.len);
-    });
+    std::sort(arcs.begin(), arcs.end(),
+              [](const DiamondArc& a, const DiamondArc& b) { return a.lo < b.lo || (a.lo == b.lo && a.len < b.len); });
     return arcs;
   };
   for (int trial = 0; trial < 5000; ++trial) {

@@ -48,7 +48,11 @@
 // trigonometry (detail/diamond_arcs.h): an arc's ends are the neighbour's
 // direction rotated by -+acos(d / 2r), which needs one square root, and they
 // are ordered by their "diamond angle", which needs one division; a uniform
-// true angle is drawn by rejection (tested there).
+// true angle is drawn by rejection (tested there). The free arcs come from
+// the blocked ones without sorting (FreeArcs::assign_complement_unsorted),
+// and on processors with AVX-512 the blocked arcs and their complement are
+// computed eight at a time, with the same bits as the scalar code (see
+// ScalarNeighbours below).
 //
 // Guarantees. Every new sample is at distance >= r from every other (checked
 // on the stored coordinates before it is accepted). Maximal: if some region
@@ -196,7 +200,6 @@ class CellGrid {
   }
 
  private:
-
   /// The cell range [first, last] per axis within `reach` of p's cell:
   /// clipped in a box, possibly past the ends (to be wrapped) on a torus.
   void window(const Point<2>& p, int reach, int first[2], int last[2]) const {
@@ -248,20 +251,19 @@ struct Neighbourhood {
   alignas(64) double dx[kCap];
   alignas(64) double dy[kCap];
   alignas(64) double d2[kCap];
-  alignas(64) double sx[kCap];  // their coordinates, for the exact test of a new sample
-  alignas(64) double sy[kCap];
   int count = 0;
   alignas(64) double lo[kCap];  // blocked arcs: start and length (diamond angles)
   alignas(64) double len[kCap];
   int blocked = 0;
 };
 
-/// What one front sample needs from the grid: its neighbourhood, gathered,
-/// its blocked arcs, and those arcs sorted by start. Two implementations
+/// What one front sample needs: its neighbourhood (gather), the arcs its
+/// neighbours block (block) and the free arcs left (complement). Two kernels
 /// compute exactly the same numbers (the same IEEE operations in the same
 /// order; no fused multiply-adds: this file is built with -ffp-contract=off):
-/// ScalarNeighbours, and on x86-64 with AVX-512, Avx512Neighbours, eight
-/// cells or neighbours per instruction. Same seed, same bytes either way
+/// ScalarNeighbours, and on x86-64 with AVX-512 Avx512Neighbours, which
+/// blocks and complements eight neighbours or arcs at a time (its gather and
+/// exact checks are the scalar ones). Same seed, same bytes either way
 /// (tested).
 struct ScalarNeighbours {
   /// Fills nb.index/dx/dy/d2/count; `seam` is whether nearest images were needed.
@@ -308,8 +310,8 @@ struct ScalarNeighbours {
 
   /// Whether q is at least r from every neighbour (exactly, on the stored
   /// coordinates; nearest images only when the window crossed a seam).
-  static bool clear_of_neighbours(const Neighbourhood& nb, const PointSet<2>& points, const Point<2>& q, double r2, bool seam,
-                                  const Domain<2>& domain) {
+  static bool clear_of_neighbours(const Neighbourhood& nb, const PointSet<2>& points, const Point<2>& q, double r2,
+                                  bool seam, const Domain<2>& domain) {
     bool clear = true;
     for (int i = 0; clear && i < nb.count; ++i) {
       const Point<2>& s = points[static_cast<std::size_t>(nb.index[i])];
@@ -333,15 +335,13 @@ struct ScalarNeighbours {
 #define PDS_AVX512 __attribute__((target("arch=x86-64-v4")))
 
 struct Avx512Neighbours {
-  // Loops below run a fixed number of steps in the usual case (up to 16
-  // neighbours or arcs), masked past the end: a trip count that follows the
-  // random neighbourhood would cost a mispredicted branch per loop.
+  // Up to 16 neighbours or arcs (the usual case) sit in two vectors; block
+  // runs both steps, masked past the end, since a trip count that follows the
+  // random neighbourhood would cost a mispredicted branch.
   static constexpr int kUsual = 16;
 
   /// The lanes [0, n) of an 8-lane step, for any n (clamped to 0..8).
-  PDS_AVX512 static __mmask8 first_lanes(int n) {
-    return static_cast<__mmask8>((1u << std::clamp(n, 0, 8)) - 1);
-  }
+  PDS_AVX512 static __mmask8 first_lanes(int n) { return static_cast<__mmask8>((1u << std::clamp(n, 0, 8)) - 1); }
   /// The largest lane (exact; written out rather than _mm512_reduce_max_pd,
   /// which trips a GCC 12 warning in its own header).
   PDS_AVX512 static double max_lane(__m512d v) {
@@ -352,9 +352,6 @@ struct Avx512Neighbours {
   }
   /// Steps of 8 covering n: 2 in the usual case.
   static int steps(int n) { return n <= kUsual ? kUsual / 8 : (n + 7) / 8; }
-
-  static bool clear_of_neighbours(const Neighbourhood& nb, const PointSet<2>& points, const Point<2>& q, double r2, bool seam,
-                                  const Domain<2>& domain) { return ScalarNeighbours::clear_of_neighbours(nb, points, q, r2, seam, domain); }
 
   /// The same IEEE steps as diamond_angle: 2 - copysign(1 + x / (|x| + |y|), y).
   /// (Bit operations on integer lanes: the floating-point ones need AVX-512 DQ.)
@@ -411,8 +408,8 @@ struct Avx512Neighbours {
     for (int i = 0; i < n; ++i) {
       const __m512d lo_i = _mm512_set1_pd(nb.lo[i]), end_i = _mm512_set1_pd(nb.lo[i] + nb.len[i]);
       for (int h = 0; h < 2; ++h) {
-        const __mmask8 later = _mm512_cmpgt_epi64_mask(_mm512_add_epi64(lane, _mm512_set1_epi64(8 * h)),
-                                                       _mm512_set1_epi64(i));
+        const __mmask8 later =
+            _mm512_cmpgt_epi64_mask(_mm512_add_epi64(lane, _mm512_set1_epi64(8 * h)), _mm512_set1_epi64(i));
         const __mmask8 after = _mm512_mask_cmp_pd_mask(live[h], lo[h], lo_i, _CMP_GT_OQ) |
                                _mm512_mask_cmp_pd_mask(live[h] & later, lo[h], lo_i, _CMP_EQ_OQ);
         covered[h] = _mm512_mask_max_pd(covered[h], after, covered[h], end_i);
@@ -523,8 +520,8 @@ template <class Kernel>
       // only a seam window can put q across one.
       Point<2> q{{p[0] + vx * scale, p[1] + vy * scale}};
       if (seam) q = domain.wrap(q);
-      const bool fits =
-          domain.contains(q) && far_enough(p, q) && Kernel::clear_of_neighbours(nb, points, q, r2, seam, domain);
+      const bool fits = domain.contains(q) && far_enough(p, q) &&
+                        ScalarNeighbours::clear_of_neighbours(nb, points, q, r2, seam, domain);
       if (!fits) {
         // Only rounding at an arc's end or at a wall gets here: drop a sliver
         // around t, twice as wide each time (6.7e-6 in all, at most 1.4e-5 rad; an arc of w rad
@@ -547,8 +544,7 @@ template <class Kernel>
   return points;
 }
 
-PointSet<2> boundary_sampling_scalar(const DunbarHumphreysParams& params, const Domain<2>& domain,
-                                     std::uint64_t seed) {
+PointSet<2> boundary_sampling_scalar(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed) {
   return boundary_sampling_with<ScalarNeighbours>(params, domain, seed);
 }
 
@@ -558,7 +554,6 @@ PDS_AVX512 PointSet<2> boundary_sampling_avx512(const DunbarHumphreysParams& par
   return boundary_sampling_with<Avx512Neighbours>(params, domain, seed);
 }
 #endif
-
 
 // ---------------------------------------------------------------------------
 // Variant 1: the paper's scalloped sectors (sampling the full annulus r..2r).
@@ -976,15 +971,12 @@ bool dunbar_humphreys_has_vector_kernel() {
 #endif
 }
 
-PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const Domain<2>& domain,
-                                      std::uint64_t seed, bool vector_kernel) {
+PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed,
+                                      bool vector_kernel) {
   domain.validate();
   require_radius_budget(domain, params.radius, params.max_points);
 #if PDS_HAVE_AVX512_KERNEL
-  // The kernel gathers points by 32-bit element offsets (twice the index):
-  // only for sets that cannot reach 2^30 samples (densest packing 1.155 / r^2).
-  const bool small_enough = 1.2 * domain.volume() / (params.radius * params.radius) < 0x1p30;
-  if (vector_kernel && small_enough) {
+  if (vector_kernel) {
     if (!dunbar_humphreys_has_vector_kernel())
       throw InvalidArgument("dunbar-humphreys: the AVX-512 kernel was asked for on a processor without it");
     return boundary_sampling_avx512(params, domain, seed);
@@ -996,7 +988,6 @@ PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const
 }
 
 }  // namespace detail
-
 
 PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed) {
   domain.validate();
