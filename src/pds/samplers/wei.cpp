@@ -88,25 +88,18 @@ constexpr int kMaxWindows = 1000;
 // an axis has two or more), or the whole axis.
 constexpr std::size_t kMaxSpan = 16;
 
-/// Poisson(lambda) by inversion of u (lambda <= 32), else as a sum of
-/// Poisson(lambda / parts) drawn from a generator seeded by h.
-int poisson(double u, double lambda, std::uint64_t h) {
-  auto invert = [](double v, double l) {
-    double p = std::exp(-l), cdf = p;
-    int n = 0;
-    // The bound stops rounding from running the sum forever (P < 1e-15 beyond it).
-    while (v >= cdf && n < 4 * static_cast<int>(l) + 40) {
-      ++n;
-      p *= l / n;
-      cdf += p;
-    }
-    return n;
-  };
-  if (lambda <= 32.0) return invert(u, lambda);
-  const int parts = static_cast<int>(std::ceil(lambda / 32.0));
-  Rng rng(h);
+/// Poisson(1) by inversion of u in [0, 1): only +, / and comparisons on
+/// IEEE doubles from the literal e^-1, so every platform gives the same
+/// count (a libm exp might differ in the last bit between platforms).
+int poisson_one(double u) {
+  double p = 0.36787944117144233, cdf = p;  // e^-1
   int n = 0;
-  for (int i = 0; i < parts; ++i) n += invert(rng.uniform(), lambda / parts);
+  // The bound stops rounding from running the sum forever (P < 1e-40 beyond it).
+  while (u >= cdf && n < 40) {
+    ++n;
+    p /= n;
+    cdf += p;
+  }
   return n;
 }
 
@@ -120,8 +113,11 @@ class Darts {
  public:
   Darts(std::uint64_t key, std::size_t cell, std::size_t active, int windows)
       : h_(mix64(key ^ mix64(cell + 0x9e3779b97f4a7c15ULL))), windows_(static_cast<std::uint64_t>(windows)) {
-    const double u = static_cast<double>(h_ >> 11) * 0x1.0p-53;
-    count_ = active == 1 && u < kExpMinusOne ? 0 : poisson(u, static_cast<double>(active), h_);
+    // Poisson(active) as a sum of `active` Poisson(1) counts, one per active
+    // cell, each from its own hash of h_ (the first from h_ itself).
+    count_ = poisson_one(uniform(h_));
+    for (std::size_t i = 1; i < active; ++i)
+      count_ += poisson_one(uniform(mix64(h_ ^ (static_cast<std::uint64_t>(i) * 0xd1b54a32d192ed03ULL))));
   }
   int count() const { return count_; }
   int window(int dart) const {
@@ -130,7 +126,7 @@ class Darts {
   }
 
  private:
-  static constexpr double kExpMinusOne = 0.36787944117144233;  // P(no dart) for one cell
+  static double uniform(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
   std::uint64_t h_, windows_;
   int count_;
 };
