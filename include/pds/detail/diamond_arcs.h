@@ -64,54 +64,18 @@ class FreeArcs {
   // r / 2 inside the ring 0.5 r..2.5 r, so there are at most 24; plus 4 walls.
   static constexpr int kMaxBlocked = 32;
 
-  /// The directions that no arc of `blocked` holds in its interior; sorts
-  /// `blocked` by start (stably).
-  void assign_complement(DiamondArc* blocked, int count) {
-    if (count > kMaxBlocked) throw std::logic_error("free arcs: more blocked arcs than a circle can have");
-    DiamondArc sorted[kMaxBlocked];
-    // By rank rather than by insertion: the 5-10 arcs of a front sample come
-    // in random order, and an insertion sort's branches are mispredicted
-    // about once per arc; counting ranks has no data-dependent branch (ties
-    // keep their input order, as a stable sort would).
-    for (int i = 0; i < count; ++i) {
-      const double lo = blocked[i].lo;
-      int rank = 0;
-      for (int j = 0; j < count; ++j) rank += (blocked[j].lo < lo) | ((blocked[j].lo == lo) & (j < i));
-      sorted[rank] = blocked[i];
-    }
-    std::copy(sorted, sorted + count, blocked);
-    assign_complement_of_sorted(blocked, count);
-  }
-
-  /// The same for arcs already sorted by start.
-  void assign_complement_of_sorted(const DiamondArc* sorted, int count) {
-    // Sweep from 0, where the arcs that wrap past 4 already cover [0, covered).
-    // Every gap is written and kept only if long enough (no branch either).
-    DiamondArc* out = arcs_;
-    double covered = 0.0;
-    for (int i = 0; i < count; ++i) covered = std::max(covered, sorted[i].lo + sorted[i].len - 4.0);
-    int kept = 0;
-    for (int i = 0; i < count; ++i) {
-      const double gap = sorted[i].lo - covered;
-      out[kept] = {covered, gap};
-      kept += gap > kMinArc;
-      covered = std::max(covered, sorted[i].lo + sorted[i].len);
-    }
-    out[kept] = {covered, 4.0 - covered};
-    kept += 4.0 - covered > kMinArc;
-    size_ = static_cast<std::size_t>(kept);
-  }
-
-  /// The same free arcs without sorting `blocked` (given as starts `lo` and
-  /// lengths `len`): the gap before arc k begins where the arcs that start
-  /// before it (ties: earlier in the list) stop covering, exactly the value
-  /// the sorted sweep reaches there; the last gap ends at 4. Equal numbers
-  /// to assign_complement, listed in the order of the arcs they end at
-  /// rather than by start. No data-dependent branch.
+  /// The directions that no blocked arc (starts `lo`, lengths `len`) holds
+  /// in its interior, without sorting the arcs: the gap before arc k begins
+  /// where the arcs that start before it (ties: earlier in the list) stop
+  /// covering, which is exactly the value a sweep over the arcs sorted by
+  /// start reaches there; the last gap ends at 4. The gaps come out in the
+  /// order of the arcs they end at. O(count^2) comparisons and no
+  /// data-dependent branch: a front sample has about 8 arcs, in random order,
+  /// and sorting them cost a mispredicted branch per arc.
   void assign_complement_unsorted(const double* lo, const double* len, int count) {
+    if (count > kMaxBlocked) throw std::logic_error("free arcs: more blocked arcs than a circle can have");
     double first = 0.0;  // [0, first) is covered by arcs that wrap past 4
     for (int i = 0; i < count; ++i) first = std::max(first, lo[i] + len[i] - 4.0);
-    if (count > kMaxBlocked) throw std::logic_error("free arcs: more blocked arcs than a circle can have");
     DiamondArc* out = arcs_;
     int kept = 0;
     double last = first;
@@ -209,8 +173,8 @@ class FreeArcs {
   // Free arcs shorter than this are dropped: under 2e-13 rad (dtheta/dt <= 2),
   // an opening between disks narrower than 2e-13 radius.
   static constexpr double kMinArc = 1e-13;
-  // Fixed storage (a front sample's arcs are few, and a vector's resizing
-  // and zero-filling showed in the profile): at most kMaxBlocked + 1 arcs
+  // Fixed storage (a front sample's arcs are few; no resizing or
+  // zero-filling per front sample): at most kMaxBlocked + 1 arcs
   // after a complement, one more per cut (at most 6 samples and 24
   // slivers around one front sample), and room for begin_fill's whole-vector
   // stores.

@@ -54,8 +54,9 @@ TEST(FreeArcs, ComplementAndCutsMatchBruteForce) {
   for (int trial = 0; trial < 2000; ++trial) {
     std::vector<DiamondArc> blocked(rng.below(11));
     for (auto& a : blocked) a = {rng.uniform(0.0, 4.0), rng.uniform(0.0, 2.0)};
-    std::vector<DiamondArc> sorted = blocked;  // assign_complement sorts its input
-    free.assign_complement(sorted.data(), static_cast<int>(sorted.size()));
+    std::vector<double> lo, len;
+    for (const auto& a : blocked) lo.push_back(a.lo), len.push_back(a.len);
+    free.assign_complement_unsorted(lo.data(), len.data(), static_cast<int>(lo.size()));
     const int cuts = static_cast<int>(rng.below(4));
     for (int c = 0; c < cuts; ++c) {
       const DiamondArc cut{rng.uniform(0.0, 4.0), rng.uniform(0.0, 1.5)};
@@ -85,6 +86,23 @@ TEST(FreeArcs, ComplementAndCutsMatchBruteForce) {
   }
 }
 
+// The free arcs by the textbook method: sort the blocked arcs by start, then
+// sweep once, opening a gap wherever the next start lies past what is
+// covered so far (from 0, where arcs wrapping past 4 already cover).
+std::vector<DiamondArc> sorted_sweep(std::vector<DiamondArc> blocked) {
+  std::stable_sort(blocked.begin(), blocked.end(),
+                   [](const DiamondArc& a, const DiamondArc& b) { return a.lo < b.lo; });
+  std::vector<DiamondArc> free;
+  double covered = 0.0;
+  for (const auto& a : blocked) covered = std::max(covered, a.lo + a.len - 4.0);
+  for (const auto& a : blocked) {
+    if (a.lo - covered > 1e-13) free.push_back({covered, a.lo - covered});
+    covered = std::max(covered, a.lo + a.len);
+  }
+  if (4.0 - covered > 1e-13) free.push_back({covered, 4.0 - covered});
+  return free;
+}
+
 // The sort-free complement computes the same free arcs as the sorted sweep,
 // bit for bit (only their order differs), including arcs that share a start.
 TEST(FreeArcs, UnsortedComplementEqualsTheSortedSweep) {
@@ -100,11 +118,9 @@ TEST(FreeArcs, UnsortedComplementEqualsTheSortedSweep) {
     if (blocked.size() > 2 && trial % 3 == 0) blocked[1].lo = blocked[0].lo;  // a shared start
     std::vector<double> lo, len;
     for (const auto& a : blocked) lo.push_back(a.lo), len.push_back(a.len);
-    FreeArcs sorted, unsorted;
-    std::vector<DiamondArc> copy = blocked;
-    sorted.assign_complement(copy.data(), static_cast<int>(copy.size()));
+    FreeArcs unsorted;
     unsorted.assign_complement_unsorted(lo.data(), len.data(), static_cast<int>(lo.size()));
-    const auto a = by_start({sorted.arcs().begin(), sorted.arcs().end()});
+    const auto a = by_start(sorted_sweep(blocked));
     const auto b = by_start({unsorted.arcs().begin(), unsorted.arcs().end()});
     ASSERT_EQ(a.size(), b.size()) << "trial " << trial;
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -132,7 +148,7 @@ double chi_square_of_true_angles(const FreeArcs& free, bool corrected, int draws
 // angles alone (at()) are not: twice as dense on the axes as on the diagonals.
 TEST(FreeArcs, SampleIsUniformInTrueAngle) {
   FreeArcs free;
-  free.assign_complement(nullptr, 0);
+  free.assign_complement_unsorted(nullptr, nullptr, 0);
   // 83.0: the 1e-5 upper quantile of chi-square with 35 degrees of freedom
   // (Wilson-Hilferty).
   EXPECT_LT(chi_square_of_true_angles(free, true, 360000, 36), 83.0);
@@ -142,9 +158,9 @@ TEST(FreeArcs, SampleIsUniformInTrueAngle) {
 // Over two free arcs each gets draws in proportion to its true angular length,
 // and every draw lies inside a free arc.
 TEST(FreeArcs, SampleSplitsBetweenArcsByTrueLength) {
-  std::array<DiamondArc, 2> blocked{{{0.9, 1.6}, {3.7, 0.6}}};  // free: [0.3, 0.9) and [2.5, 3.7)
+  const double lo[2] = {0.9, 3.7}, len[2] = {1.6, 0.6};  // free: [0.3, 0.9) and [2.5, 3.7)
   FreeArcs free;
-  free.assign_complement(blocked.data(), 2);
+  free.assign_complement_unsorted(lo, len, 2);
   ASSERT_EQ(free.arcs().size(), 2u);
   const auto length = [](double lo, double hi) {
     double d = true_angle(hi) - true_angle(lo);
