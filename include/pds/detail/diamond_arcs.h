@@ -9,7 +9,6 @@
 #include <cmath>
 #include <span>
 #include <stdexcept>
-#include <vector>
 
 #include "pds/error.h"
 #include "pds/rng.h"
