@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "pds/detail/format.h"
 #include "pds/domain.h"
 
 namespace pds {
@@ -34,8 +35,9 @@ double packing_count(double volume, double r, int dim);
 template <int D>
 void require_radius_budget(const Domain<D>& domain, double r, std::uint64_t max_points) {
   require_radius(r);
-  require_point_budget(packing_count(domain.volume(), r, D), D, max_points,
-                       "radius " + std::to_string(r) + " over a domain of volume " + std::to_string(domain.volume()));
+  require_point_budget(
+      packing_count(domain.volume(), r, D), D, max_points,
+      "radius " + detail::format_number(r) + " over a domain of volume " + detail::format_number(domain.volume()));
 }
 
 }  // namespace pds

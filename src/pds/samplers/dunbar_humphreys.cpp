@@ -87,6 +87,7 @@
 #include <vector>
 
 #include "pds/detail/diamond_arcs.h"
+#include "pds/detail/format.h"
 #include "pds/detail/sum_tree.h"
 #include "pds/error.h"
 #include "pds/rng.h"
@@ -452,7 +453,8 @@ template <class Kernel>
         throw InvalidArgument(
             "dunbar-humphreys: on a torus every period must be more than 4 radius (the circles are 1e-10 larger than "
             "the radius); axis " +
-            std::to_string(i) + " has " + std::to_string(domain.extent(i)) + " for radius " + std::to_string(r));
+            std::to_string(i) + " has " + detail::format_number(domain.extent(i)) + " for radius " +
+            detail::format_number(r));
 
   CellGrid grid(domain, r / std::sqrt(2.0));
   const int reach = grid.reach(2.0 * rc);  // cells that may hold a sample within 2 rc
@@ -528,7 +530,7 @@ template <class Kernel>
         // dropped leaves a hole of depth about w^2 r / 8). Bounded per front sample.
         if (++rejected > 24)
           throw Failure("dunbar-humphreys: 24 candidates rejected by rounding around one sample (radius " +
-                        std::to_string(r) + ")");
+                        detail::format_number(r) + ")");
         const double sliver = 1e-13 * std::ldexp(1.0, rejected);
         arcs.remove({t - sliver < 0.0 ? t - sliver + 4.0 : t - sliver, 2.0 * sliver});
         continue;
@@ -888,7 +890,8 @@ PointSet<2> global_scalloped_sampling(const DunbarHumphreysParams& params, const
     if (!polar_candidate(domain, points, neighbours, p, rad, theta, r2, q)) {
       // Only rounding on a sector's boundary can get here; bounded overall.
       if (++rejected > 1000 + points.size())
-        throw Failure("dunbar-humphreys: too many candidates rejected by rounding (radius " + std::to_string(r) + ")");
+        throw Failure("dunbar-humphreys: too many candidates rejected by rounding (radius " + detail::format_number(r) +
+                      ")");
       continue;
     }
     int m = 0;
@@ -945,7 +948,7 @@ PointSet<2> scalloped_sector_sampling(const DunbarHumphreysParams& params, const
         // exact): a new draw lands elsewhere. Bounded per front sample.
         if (++rejected > 1000)
           throw Failure("dunbar-humphreys: 1000 candidates rejected by rounding around one sample (radius " +
-                        std::to_string(r) + ")");
+                        detail::format_number(r) + ")");
         continue;
       }
       neighbours.push_back(add(q));
@@ -1003,7 +1006,8 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
         if (domain.extent(i) <= 6.0 * r)  // samples within 3r need one nearest image
           throw InvalidArgument(
               "dunbar-humphreys: variants 1 and 2 on a torus need every period above 6 radius; axis " +
-              std::to_string(i) + " has " + std::to_string(domain.extent(i)) + " for radius " + std::to_string(r));
+              std::to_string(i) + " has " + detail::format_number(domain.extent(i)) + " for radius " +
+              detail::format_number(r));
     return params.variant == 1 ? scalloped_sector_sampling(params, domain, seed)
                                : global_scalloped_sampling(params, domain, seed);
   }
