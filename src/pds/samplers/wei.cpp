@@ -153,13 +153,16 @@ class FineCells {
   bool empty() const { return parents_.empty(); }
   std::uint32_t parent(std::size_t i) const { return parents_[i]; }
   FineCell operator[](std::size_t i) const {
+    // Bytes, read through memcpy: a 2- or 4-byte sub need not be aligned.
     const std::uint8_t* at = &subs_[i * width_];
-    std::uint32_t sub = *at;
-    if (width_ == 2) {
+    std::uint32_t sub;
+    if (width_ == 1) {
+      sub = *at;
+    } else if (width_ == 2) {
       std::uint16_t s;
       std::memcpy(&s, at, 2);
       sub = s;
-    } else if (width_ == 4) {
+    } else {
       std::memcpy(&sub, at, 4);
     }
     return {parents_[i], sub};
