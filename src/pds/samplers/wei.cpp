@@ -57,8 +57,10 @@
 // Complexity: O(N k) darts at level 0, and each finer level visits only the
 // cells that are still uncovered: O(N) work for a fixed number of levels,
 // k W 3^D barriers per level (empty ones skipped). Memory: one float offset
-// per level-0 cell (about 3 per sample in 2D), the active fine cells, and
-// during a pass one 4-byte entry per dart (about one per empty cell).
+// per level-0 cell (about 3 per sample in 2D), the active fine cells (5
+// bytes each at level 1 in 2D, about 2 per sample), and during a level's
+// passes one 4-byte entry per dart (about one per empty cell), freed before
+// the next level: at N = 10^6 in 2D a peak of 2.8 times the output (docs/wei.md).
 #include "pds/samplers/wei.h"
 
 #include <tbb/blocked_range.h>
@@ -68,6 +70,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -135,6 +138,52 @@ class Darts {
 struct FineCell {
   std::uint32_t parent;
   std::uint32_t sub;  // sub-cell index at this level, axis 0 fastest
+};
+
+/// The active cells of a finer level as two arrays, parents and subs. A sub
+/// at level l is below 2^(D l), so it is stored in the fewest of 1, 2 or 4
+/// bytes that hold every index of the level: at level 1 in 2D, where these
+/// cells are most numerous (about 2 per sample), 5 bytes a cell instead of 8.
+class FineCells {
+ public:
+  FineCells() = default;
+  FineCells(std::size_t size, int sub_bits)
+      : parents_(size), width_(sub_bits <= 8 ? 1 : (sub_bits <= 16 ? 2 : 4)), subs_(size * width_) {}
+  std::size_t size() const { return parents_.size(); }
+  bool empty() const { return parents_.empty(); }
+  std::uint32_t parent(std::size_t i) const { return parents_[i]; }
+  FineCell operator[](std::size_t i) const {
+    // Bytes, read through memcpy: a 2- or 4-byte sub need not be aligned.
+    const std::uint8_t* at = &subs_[i * width_];
+    std::uint32_t sub;
+    if (width_ == 1) {
+      sub = *at;
+    } else if (width_ == 2) {
+      std::uint16_t s;
+      std::memcpy(&s, at, 2);
+      sub = s;
+    } else {
+      std::memcpy(&sub, at, 4);
+    }
+    return {parents_[i], sub};
+  }
+  void set(std::size_t i, FineCell cell) {
+    parents_[i] = cell.parent;
+    std::uint8_t* at = &subs_[i * width_];
+    if (width_ == 1) {
+      *at = static_cast<std::uint8_t>(cell.sub);
+    } else if (width_ == 2) {
+      const auto s = static_cast<std::uint16_t>(cell.sub);
+      std::memcpy(at, &s, 2);
+    } else {
+      std::memcpy(at, &cell.sub, 4);
+    }
+  }
+
+ private:
+  std::vector<std::uint32_t> parents_;
+  std::size_t width_ = 4;
+  std::vector<std::uint8_t> subs_;
 };
 
 template <int D>
@@ -313,8 +362,7 @@ class WeiSampler {
   /// and returns true if it fits. `fits(q)` says whether the dart q is at
   /// distance >= r from every sample.
   template <class Fits>
-  bool throw_dart(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level, Rng& rng,
-                  Fits&& fits) {
+  bool throw_dart(std::size_t cell, const std::array<int, D>& c, std::uint32_t sub, int level, Rng& rng, Fits&& fits) {
     Point<D> lo, hi, x;
     sub_bounds(c, sub, level, lo, hi);
     for (int i = 0; i < D; ++i) x[i] = rng.uniform(lo[i], hi[i]);
@@ -372,11 +420,11 @@ class WeiSampler {
     if (level > 0) {
       const std::size_t group_begin = group_begin_[g], group_end = group_begin_[g + 1];
       std::size_t i = begin;
-      while (i < end && i > group_begin && active_[i].parent == active_[i - 1].parent) ++i;
+      while (i < end && i > group_begin && active_.parent(i) == active_.parent(i - 1)) ++i;
       while (i < end) {
-        const std::uint32_t cell = active_[i].parent;
+        const std::uint32_t cell = active_.parent(i);
         std::size_t j = i;
-        while (j < group_end && active_[j].parent == cell) ++j;
+        while (j < group_end && active_.parent(j) == cell) ++j;
         if (std::isnan(grid_[cell][0])) f(i, cell, j - i);
         i = j;
       }
@@ -450,7 +498,8 @@ class WeiSampler {
       }
     bucket_[windows * groups] = at;
     events_.resize(at);
-    over_chunks([&](std::size_t* row, std::size_t unit, int w) { events_[row[w]++] = static_cast<std::uint32_t>(unit); });
+    over_chunks(
+        [&](std::size_t* row, std::size_t unit, int w) { events_[row[w]++] = static_cast<std::uint32_t>(unit); });
   }
 
   /// The darts of one window of a pass in one phase group, the cells in
@@ -471,7 +520,7 @@ class WeiSampler {
         while (j < end && events_[j] == unit) ++j;
         const std::size_t darts = j - i;
         i = j;
-        const std::uint32_t cell = level == 0 ? unit : active_[unit].parent;
+        const std::uint32_t cell = level == 0 ? unit : active_.parent(unit);
         if (!std::isnan(grid_[cell][0])) continue;  // filled earlier in this pass
         const auto c = coords(cell);
         Rng rng = dart_rng(level, cell, pass, window);
@@ -488,7 +537,7 @@ class WeiSampler {
           continue;
         }
         std::size_t last = unit;
-        while (last < active_.size() && active_[last].parent == cell) ++last;
+        while (last < active_.size() && active_.parent(last) == cell) ++last;
         // Each dart in one of the cell's active fine cells, chosen uniformly.
         for (std::size_t d = 0; d < darts; ++d)
           if (throw_dart(cell, c, active_[unit + rng.below(last - unit)].sub, level, rng, fits)) break;
@@ -506,7 +555,9 @@ class WeiSampler {
         for (const std::size_t g : group_order(level, pass, w))
           run_group(level, pass, w, static_cast<std::size_t>(w) * groups + g);
     }
-    events_ = {};
+    // Freed before the next refine; `events_ = {}` would only clear it (it
+    // picks the initializer-list assignment).
+    std::vector<std::uint32_t>().swap(events_);
   }
 
   /// True if one sample's disk contains the whole box [lo, hi].
@@ -569,13 +620,13 @@ class WeiSampler {
         group_begin_[group_of(parent_at(p).parent) + 1] += static_cast<std::size_t>(std::popcount(masks[p]));
     for (std::size_t g = 0; g + 1 < group_begin_.size(); ++g) group_begin_[g + 1] += group_begin_[g];
     std::vector<std::size_t> fill(group_begin_.begin(), group_begin_.end() - 1);
-    std::vector<FineCell> next(group_begin_.back());
+    FineCells next(group_begin_.back(), D * level);
     for (std::size_t p = 0; p < count; ++p) {
       if (!masks[p]) continue;
       const FineCell f = parent_at(p);
       std::size_t& at = fill[group_of(f.parent)];
       for (int child = 0; child < kChildren; ++child)
-        if (masks[p] >> child & 1) next[at++] = {f.parent, child_sub(f.sub, child, parent_side)};
+        if (masks[p] >> child & 1) next.set(at++, {f.parent, child_sub(f.sub, child, parent_side)});
     }
     active_ = std::move(next);
   }
@@ -603,7 +654,7 @@ class WeiSampler {
   // The sample of each level-0 cell as a float offset from the cell's corner
   // (NaN if none): 8 bytes a cell in 2D instead of 16.
   std::vector<Offset> grid_;
-  std::vector<FineCell> active_;          // this level's cells, sorted by phase group
+  FineCells active_;                      // this level's cells, sorted by phase group
   std::vector<std::size_t> group_begin_;  // where each group's cells start in active_
   // The darts of the current pass, one entry per dart naming its unit (see
   // for_each_unit), sorted by window, then group; bucket_[w * groups + g] is
@@ -641,19 +692,22 @@ const Method& wei_method() {
           "Poisson times in time windows, multi-level",
       .citation = "L.-Y. Wei, Parallel Poisson disk sampling, ACM SIGGRAPH 2008",
       .takes_radius = true,
-      .params = {{"k", double(WeiParams{}.trials), 1, 1000, true,
-                  "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},
-                 {"levels", double(WeiParams{}.levels), 1, kMaxLevels, true,
-                  "grid levels (each halves the cells of the last and retries where no single disk covers)"},
-                 {"windows", double(WeiParams{}.windows), 1, kMaxWindows, true,
-                  "time windows per pass, run in order, groups in a random order in each (1: a pass in one visit, "
-                  "whose first group leaves a lattice)"}},
+      .params =
+          {{"k", double(WeiParams{}.trials), 1, 1000, true,
+            "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},
+           {"levels", double(WeiParams{}.levels), 1, kMaxLevels, true,
+            "grid levels (each halves the cells of the last and retries where no single disk covers)"},
+           {"windows", double(WeiParams{}.windows), 1, kMaxWindows, true,
+            "time windows per pass, run in order, groups in a random order in each (1: a pass in one visit, "
+            "whose first group leaves a lattice)"}},
       .run =
           [](const GenerateRequest& r) {
             return run_typed(r, [&](const auto& domain) {
-              const WeiParams params{*r.radius, static_cast<int>(r.param("k", WeiParams{}.trials)),
+              const WeiParams params{*r.radius,
+                                     static_cast<int>(r.param("k", WeiParams{}.trials)),
                                      static_cast<int>(r.param("levels", WeiParams{}.levels)),
-                                     static_cast<int>(r.param("windows", WeiParams{}.windows)), r.threads,
+                                     static_cast<int>(r.param("windows", WeiParams{}.windows)),
+                                     r.threads,
                                      r.max_points};
               return wei(params, domain, r.seed);
             });
