@@ -243,15 +243,19 @@ std::int32_t append_sample(PointSet<2>& points, CellGrid& grid, const Point<2>& 
 // ---------------------------------------------------------------------------
 
 /// The samples within 2 rc of a front sample p (p excluded), in the window's
-/// row-major cell order, with their offsets from p; then the arcs of p's
-/// circle that they (and the walls) block. Arrays have slack past the most
-/// neighbours a circle can have (24), for whole-vector stores.
+/// row-major cell order: their stored coordinates (sx, sy), and where the
+/// window crossed a torus seam also their nearest-image offsets (dx, dy) from
+/// p (elsewhere the offsets are sx - p[0], sy - p[1], recomputed where
+/// needed: the same subtraction, so the same bits, and two stores per cell
+/// fewer in the gather). Then the arcs of p's circle that they (and the walls)
+/// block. Arrays have slack past the most neighbours a circle can have (24),
+/// for whole-vector stores.
 struct Neighbourhood {
   static constexpr int kCap = detail::FreeArcs::kMaxBlocked + 16;
-  alignas(64) std::int32_t index[kCap];
-  alignas(64) double dx[kCap];
+  alignas(64) double sx[kCap];
+  alignas(64) double sy[kCap];
+  alignas(64) double dx[kCap];  // seam windows only
   alignas(64) double dy[kCap];
-  alignas(64) double d2[kCap];
   int count = 0;
   alignas(64) double lo[kCap];  // blocked arcs: start and length (diamond angles)
   alignas(64) double len[kCap];
@@ -267,41 +271,48 @@ struct Neighbourhood {
 /// exact checks are the scalar ones). Same seed, same bytes either way
 /// (tested).
 struct ScalarNeighbours {
-  /// Fills nb.index/dx/dy/d2/count; `seam` is whether nearest images were needed.
+  /// Fills nb.sx/sy/count (and dx/dy across a seam); `seam` is whether
+  /// nearest images were needed. p itself is the one sample at distance 0
+  /// (the others are at least r away, and a difference of distinct doubles
+  /// is not 0), so d2 > 0 leaves it out.
   static void gather(const CellGrid& grid, const PointSet<2>& points, const Domain<2>& domain, const Point<2>& p,
-                     std::int32_t self, int reach, double reach2, Neighbourhood& nb, bool& seam) {
+                     int reach, double reach2, Neighbourhood& nb, bool& seam) {
     std::int32_t cells[CellGrid::kMaxWindow * CellGrid::kMaxWindow];
     const int ncells = grid.collect_near(p, reach, cells, seam);
     int n = 0;
     // Kept without a branch, so that the divisions that follow overlap.
-    const auto scan = [&](auto across_seam) {
+    if (!seam) {
       for (int c = 0; c < ncells; ++c) {
-        const std::int32_t j = cells[c];
-        const Point<2>& s = points[static_cast<std::size_t>(j)];
-        double dx = s[0] - p[0], dy = s[1] - p[1];
-        if constexpr (across_seam) dx = domain.delta(p[0], s[0], 0), dy = domain.delta(p[1], s[1], 1);
+        const Point<2>& s = points[static_cast<std::size_t>(cells[c])];
+        const double dx = s[0] - p[0], dy = s[1] - p[1];
         const double d2 = dx * dx + dy * dy;
-        nb.index[n] = j;
+        nb.sx[n] = s[0];
+        nb.sy[n] = s[1];
+        n += (d2 < reach2) & (d2 > 0.0);
+      }
+    } else {
+      for (int c = 0; c < ncells; ++c) {
+        const Point<2>& s = points[static_cast<std::size_t>(cells[c])];
+        const double dx = domain.delta(p[0], s[0], 0), dy = domain.delta(p[1], s[1], 1);
+        const double d2 = dx * dx + dy * dy;
+        nb.sx[n] = s[0];
+        nb.sy[n] = s[1];
         nb.dx[n] = dx;
         nb.dy[n] = dy;
-        nb.d2[n] = d2;
-        n += (d2 < reach2) & (j != self);
+        n += (d2 < reach2) & (d2 > 0.0);
       }
-    };
-    if (seam)
-      scan(std::true_type{});
-    else
-      scan(std::false_type{});
+    }
     nb.count = n;
   }
 
   /// Appends the arc each neighbour blocks: the directions within
   /// acos(d / 2rc) of its own; rotating (dx, dy) by -+ that angle gives
   /// (dx +- dy k, dy -+ dx k) up to scale, with k = tan = sqrt((2rc)^2 - d^2) / d.
-  static void block(double reach2, Neighbourhood& nb) {
+  static void block(double reach2, const Point<2>& p, bool seam, Neighbourhood& nb) {
     for (int i = 0; i < nb.count; ++i) {
-      const double dx = nb.dx[i], dy = nb.dy[i];
-      const double k = std::sqrt((reach2 - nb.d2[i]) / nb.d2[i]);
+      const double dx = seam ? nb.dx[i] : nb.sx[i] - p[0], dy = seam ? nb.dy[i] : nb.sy[i] - p[1];
+      const double d2 = dx * dx + dy * dy;
+      const double k = std::sqrt((reach2 - d2) / d2);
       const detail::DiamondArc a = detail::diamond_arc(dx + dy * k, dy - dx * k, dx - dy * k, dy + dx * k);
       nb.lo[nb.blocked] = a.lo;
       nb.len[nb.blocked] = a.len;
@@ -311,15 +322,14 @@ struct ScalarNeighbours {
 
   /// Whether q is at least r from every neighbour (exactly, on the stored
   /// coordinates; nearest images only when the window crossed a seam).
-  static bool clear_of_neighbours(const Neighbourhood& nb, const PointSet<2>& points, const Point<2>& q, double r2,
-                                  bool seam, const Domain<2>& domain) {
+  static bool clear_of_neighbours(const Neighbourhood& nb, const Point<2>& q, double r2, bool seam,
+                                  const Domain<2>& domain) {
     bool clear = true;
     for (int i = 0; clear && i < nb.count; ++i) {
-      const Point<2>& s = points[static_cast<std::size_t>(nb.index[i])];
       if (seam) {
-        clear = domain.distance2(q, s) >= r2;
+        clear = domain.distance2(q, Point<2>{{nb.sx[i], nb.sy[i]}}) >= r2;
       } else {
-        const double dx = q[0] - s[0], dy = q[1] - s[1];
+        const double dx = q[0] - nb.sx[i], dy = q[1] - nb.sy[i];
         clear = dx * dx + dy * dy >= r2;
       }
     }
@@ -366,13 +376,21 @@ struct Avx512Neighbours {
   }
 
   /// As ScalarNeighbours::block, eight neighbours per step.
-  PDS_AVX512 static void block(double reach2, Neighbourhood& nb) {
+  PDS_AVX512 static void block(double reach2, const Point<2>& p, bool seam, Neighbourhood& nb) {
     const __m512d limit = _mm512_set1_pd(reach2), four = _mm512_set1_pd(4.0), one = _mm512_set1_pd(1.0);
+    const __m512d px = _mm512_set1_pd(p[0]), py = _mm512_set1_pd(p[1]);
     for (int step = 0, n = steps(nb.count); step < n; ++step) {
       const int i = 8 * step;
       const __mmask8 live = first_lanes(nb.count - i);
-      const __m512d dx = _mm512_maskz_loadu_pd(live, nb.dx + i), dy = _mm512_maskz_loadu_pd(live, nb.dy + i);
-      const __m512d d2 = _mm512_mask_loadu_pd(one, live, nb.d2 + i);
+      __m512d dx, dy;
+      if (seam) {
+        dx = _mm512_maskz_loadu_pd(live, nb.dx + i), dy = _mm512_maskz_loadu_pd(live, nb.dy + i);
+      } else {  // the gather's subtraction again (dead lanes give 0)
+        dx = _mm512_maskz_sub_pd(live, _mm512_maskz_loadu_pd(live, nb.sx + i), px);
+        dy = _mm512_maskz_sub_pd(live, _mm512_maskz_loadu_pd(live, nb.sy + i), py);
+      }
+      // Dead lanes divide by 1, not 0.
+      const __m512d d2 = _mm512_mask_add_pd(one, live, _mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
       const __m512d ratio = _mm512_div_pd(_mm512_sub_pd(limit, d2), d2);
       const __m512d k = _mm512_mask_sqrt_pd(ratio, 0xFF, ratio);  // (the unmasked form warns in GCC 12)
       const __m512d dyk = _mm512_mul_pd(dy, k), dxk = _mm512_mul_pd(dx, k);
@@ -385,6 +403,25 @@ struct Avx512Neighbours {
       _mm512_storeu_pd(nb.len + nb.blocked + i, len);
     }
     nb.blocked += nb.count;
+  }
+
+  /// As ScalarNeighbours::clear_of_neighbours, eight neighbours per step
+  /// (the same subtractions, products and comparison per neighbour; no
+  /// early exit, whose trip count would be a mispredicted branch).
+  PDS_AVX512 static bool clear_of_neighbours(const Neighbourhood& nb, const Point<2>& q, double r2, bool seam,
+                                             const Domain<2>& domain) {
+    if (seam) return ScalarNeighbours::clear_of_neighbours(nb, q, r2, seam, domain);
+    const __m512d qx = _mm512_set1_pd(q[0]), qy = _mm512_set1_pd(q[1]), limit = _mm512_set1_pd(r2);
+    __mmask8 close = 0;
+    for (int step = 0, n = steps(nb.count); step < n; ++step) {
+      const int i = 8 * step;
+      const __mmask8 live = first_lanes(nb.count - i);
+      const __m512d dx = _mm512_sub_pd(qx, _mm512_maskz_loadu_pd(live, nb.sx + i));
+      const __m512d dy = _mm512_sub_pd(qy, _mm512_maskz_loadu_pd(live, nb.sy + i));
+      const __m512d d2 = _mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
+      close |= _mm512_mask_cmp_pd_mask(live, d2, limit, _CMP_NGE_UQ);  // not (d2 >= r2), as the scalar test
+    }
+    return close == 0;
   }
 
   /// As ScalarNeighbours::complement (FreeArcs::assign_complement_unsorted),
@@ -472,7 +509,6 @@ template <class Kernel>
   // The front is every sample not yet processed, in insertion order (breadth
   // first), which keeps the grid rows and points being touched in cache.
   for (std::size_t head = 0; head < points.size(); ++head) {
-    const auto self = static_cast<std::int32_t>(head);
     const Point<2> p = points[head];
     nb.blocked = 0;
     if (!domain.periodic) {
@@ -498,8 +534,8 @@ template <class Kernel>
     bool seam = false;
     // (Gathered by scalar loads in both kernels: AVX-512 gathers of the
     // points, seven rows of them, measured slower here.)
-    ScalarNeighbours::gather(grid, points, domain, p, self, reach, reach2, nb, seam);
-    Kernel::block(reach2, nb);
+    ScalarNeighbours::gather(grid, points, domain, p, reach, reach2, nb, seam);
+    Kernel::block(reach2, p, seam, nb);
     if (nb.blocked > detail::FreeArcs::kMaxBlocked)
       throw std::logic_error("dunbar-humphreys: more blocked arcs than a circle can have");
     Kernel::complement(nb, arcs);
@@ -523,7 +559,7 @@ template <class Kernel>
       Point<2> q{{p[0] + vx * scale, p[1] + vy * scale}};
       if (seam) q = domain.wrap(q);
       const bool fits = domain.contains(q) && far_enough(p, q) &&
-                        ScalarNeighbours::clear_of_neighbours(nb, points, q, r2, seam, domain);
+                        Kernel::clear_of_neighbours(nb, q, r2, seam, domain);
       if (!fits) {
         // Only rounding at an arc's end or at a wall gets here: drop a sliver
         // around t, twice as wide each time (6.7e-6 in all, at most 1.4e-5 rad; an arc of w rad
@@ -536,7 +572,9 @@ template <class Kernel>
         continue;
       }
       // The new sample is a neighbour for the rest of p's circle.
-      nb.index[nb.count] = append_sample(points, grid, q);
+      append_sample(points, grid, q);
+      nb.sx[nb.count] = q[0];
+      nb.sy[nb.count] = q[1];
       ++nb.count;
       // It blocks exactly +-60 degrees of the circle.
       arcs.remove(detail::diamond_arc(0.5 * vx + sin60 * vy, 0.5 * vy - sin60 * vx, 0.5 * vx - sin60 * vy,
