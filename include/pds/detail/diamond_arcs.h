@@ -134,9 +134,18 @@ class FreeArcs {
   }
 
   /// The diamond angle at fraction u in [0, 1) of the free length.
-  double at(double u) const {
-    double total = 0.0;
-    for (const DiamondArc& a : arcs()) total += a.len;
+  double at(double u) const { return at(u, total()); }
+
+  /// The free length (summed in list order).
+  double total() const {
+    double sum = 0.0;
+    for (const DiamondArc& a : arcs()) sum += a.len;
+    return sum;
+  }
+
+  /// As at(u), with the free length `total` already summed (sample() tries
+  /// several u on the same arcs).
+  double at(double u, double total) const {
     double x = u * total;
     for (const DiamondArc& a : arcs()) {
       if (x < a.len) {
@@ -153,8 +162,9 @@ class FreeArcs {
   /// probability (dtheta/dt) / 2: dtheta/dt = 1 / (c^2 + s^2) lies in [1, 2]
   /// (s the position of t within its quadrant, c = 1 - s).
   double sample(Rng& rng) const {
+    const double free_length = total();
     for (int attempt = 0; attempt < 1000; ++attempt) {
-      const double t = at(rng.uniform());
+      const double t = at(rng.uniform(), free_length);
       const double s = t - static_cast<double>(static_cast<int>(t)), c = 1.0 - s;  // t >= 0: truncation is floor
       if (2.0 * (c * c + s * s) * rng.uniform() < 1.0) return t;
     }
