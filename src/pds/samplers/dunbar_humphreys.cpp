@@ -558,8 +558,7 @@ template <class Kernel>
       // only a seam window can put q across one.
       Point<2> q{{p[0] + vx * scale, p[1] + vy * scale}};
       if (seam) q = domain.wrap(q);
-      const bool fits = domain.contains(q) && far_enough(p, q) &&
-                        Kernel::clear_of_neighbours(nb, q, r2, seam, domain);
+      const bool fits = domain.contains(q) && far_enough(p, q) && Kernel::clear_of_neighbours(nb, q, r2, seam, domain);
       if (!fits) {
         // Only rounding at an arc's end or at a wall gets here: drop a sliver
         // around t, twice as wide each time (6.7e-6 in all, at most 1.4e-5 rad; an arc of w rad
