@@ -364,8 +364,8 @@ struct Avx512Neighbours {
   /// Steps of 8 covering n: 2 in the usual case.
   static int steps(int n) { return n <= kUsual ? kUsual / 8 : (n + 7) / 8; }
 
-  /// The same IEEE steps as diamond_angle: 2 - copysign(1 + x / (|x| + |y|), y).
-  /// (Bit operations on integer lanes: the floating-point ones need AVX-512 DQ.)
+  /// The same IEEE steps as diamond_angle: 2 - copysign(1 + x / (|x| + |y|), y),
+  /// the copysign as bit operations on the sign bit.
   PDS_AVX512 static __m512d diamond_angle(__m512d x, __m512d y) {
     const __m512i sign = _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ull));
     const __m512d u = _mm512_div_pd(x, _mm512_add_pd(_mm512_abs_pd(x), _mm512_abs_pd(y)));
@@ -442,12 +442,11 @@ struct Avx512Neighbours {
     }
     const double from = max_lane(first);  // over the arcs and 0
     covered[0] = covered[1] = _mm512_set1_pd(from);
-    const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
     for (int i = 0; i < n; ++i) {
       const __m512d lo_i = _mm512_set1_pd(nb.lo[i]), end_i = _mm512_set1_pd(nb.lo[i] + nb.len[i]);
+      const unsigned listed_after = ~((2u << i) - 1);  // the arcs k > i, one bit each
       for (int h = 0; h < 2; ++h) {
-        const __mmask8 later =
-            _mm512_cmpgt_epi64_mask(_mm512_add_epi64(lane, _mm512_set1_epi64(8 * h)), _mm512_set1_epi64(i));
+        const auto later = static_cast<__mmask8>(listed_after >> (8 * h));
         const __mmask8 after = _mm512_mask_cmp_pd_mask(live[h], lo[h], lo_i, _CMP_GT_OQ) |
                                _mm512_mask_cmp_pd_mask(live[h] & later, lo[h], lo_i, _CMP_EQ_OQ);
         covered[h] = _mm512_mask_max_pd(covered[h], after, covered[h], end_i);
