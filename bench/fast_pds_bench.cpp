@@ -57,6 +57,14 @@ void BM_DunbarHumphreys(benchmark::State& state) {
 }
 BENCHMARK(BM_DunbarHumphreys)->RangeMultiplier(10)->Range(10'000, 10'000'000)->Unit(benchmark::kMillisecond);
 
+/// The same boundary sampling on its scalar kernel (what a processor without
+/// AVX-512 runs; the same bytes).
+void BM_DunbarHumphreysScalar(benchmark::State& state) {
+  run(state, 0.875,
+      [](double r) { return pds::detail::dunbar_humphreys_boundary({r}, pds::Domain<2>::unit(true), 1, false); });
+}
+BENCHMARK(BM_DunbarHumphreysScalar)->Arg(10'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
 /// The paper's scalloped sectors (variant 1): new samples uniform over the free annulus r..2r.
 void BM_DunbarHumphreysSectors(benchmark::State& state) {
   run(state, 0.735, [](double r) {

@@ -49,6 +49,27 @@ inline DiamondArc diamond_arc(double ax, double ay, double bx, double by) {
   return {lo, len};
 }
 
+/// diamond_arc with one division for both ends instead of two: 1 / (sa sb)
+/// for the ends' sums sa = |ax| + |ay| and sb, then each quotient as a
+/// product (ax sb / (sa sb)), for the hot loop where divisions set the pace.
+/// The quotients are a few ulps off the correctly rounded ones (clamped to 1,
+/// so the angles stay in [0, 4]), and, unlike the two quotients of
+/// diamond_arc, the two ends no longer round alike: an arc a few ulps long
+/// could come out slightly negative and wrap to almost a full turn. Such a
+/// length (above 3) is set to 0; the arcs this serves are at most 120 degrees,
+/// under 2.1 in diamond measure. The components should be near 1 in size
+/// (four of them are multiplied together).
+inline DiamondArc diamond_arc_one_division(double ax, double ay, double bx, double by) {
+  const double sa = std::abs(ax) + std::abs(ay), sb = std::abs(bx) + std::abs(by);
+  const double inv = 1.0 / (sa * sb);
+  const double ua = std::min(ax * sb * inv, 1.0), ub = std::min(bx * sa * inv, 1.0);
+  double lo = 2.0 - std::copysign(1.0 + ua, ay), len = (2.0 - std::copysign(1.0 + ub, by)) - lo;
+  lo -= 4.0 * static_cast<double>(lo >= 4.0);
+  len += 4.0 * static_cast<double>(len < 0.0);
+  len *= static_cast<double>(len <= 3.0);
+  return {lo, len};
+}
+
 /// How far x lies past `lo` counterclockwise, in [0, 4) (both in [0, 4)).
 inline double diamond_past(double x, double lo) {
   const double d = x - lo;

@@ -46,6 +46,52 @@ TEST(DiamondAngle, IncreasesWithTheTrueAngleAndInvertsDiamondDirection) {
   }
 }
 
+// The one-division arc agrees with diamond_arc to a few ulps, for ends of
+// unequal size near 1, on the axes and across the wrap at 4, and an arc a
+// few ulps long (or empty) never comes out as almost a full turn.
+TEST(DiamondArc, OneDivisionFormMatchesTwoDivisions) {
+  Rng rng(21);
+  const auto circular = [](double a, double b) { return std::min(std::abs(a - b), 4.0 - std::abs(a - b)); };
+  int wrapped = 0, tiny = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    // Every 8th start on an axis (exact components), every 4th arc tiny.
+    const double theta = trial % 8 == 0 ? 0.5 * kPi * rng.below(4) : rng.uniform(0.0, 2.0 * kPi);
+    const double width = trial % 4 == 0 ? 1e-15 * rng.below(8) : rng.uniform(0.0, 2.1);
+    const double sa = rng.uniform(0.25, 1.0), sb = trial % 4 == 0 ? sa : rng.uniform(0.25, 1.0);
+    const double ax = trial % 8 == 0 ? std::round(std::cos(theta)) : std::cos(theta);
+    const double ay = trial % 8 == 0 ? std::round(std::sin(theta)) : std::sin(theta);
+    const double bx = width == 0.0 ? ax : std::cos(theta + width), by = width == 0.0 ? ay : std::sin(theta + width);
+    const DiamondArc two = diamond_arc(sa * ax, sa * ay, sb * bx, sb * by);
+    const DiamondArc one = diamond_arc_one_division(sa * ax, sa * ay, sb * bx, sb * by);
+    ASSERT_GE(one.lo, 0.0) << "trial " << trial;
+    ASSERT_LT(one.lo, 4.0) << "trial " << trial;
+    ASSERT_GE(one.len, 0.0) << "trial " << trial;
+    ASSERT_LE(one.len, 2.1) << "trial " << trial;
+    ASSERT_LE(circular(one.lo, two.lo), 4e-15) << "trial " << trial;
+    if (two.len < 3.0) {
+      ASSERT_NEAR(one.len, two.len, 8e-15) << "trial " << trial;
+    }
+    if (width == 0.0 && sa == sb) {
+      ASSERT_EQ(one.len, 0.0) << "trial " << trial;
+    }
+    wrapped += one.lo + one.len > 4.0;
+    tiny += width < 1e-14;
+  }
+  EXPECT_GT(wrapped, 1000);  // the wrap at 4 was exercised
+  EXPECT_GT(tiny, 40000);
+  // An end that rounds a hair before its start: an empty arc, not a full turn
+  // (diamond_arc, for which this is a legitimate almost full turn, says 4 - 3e-15).
+  int reversed = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const double theta = rng.uniform(0.0, 2.0 * kPi);
+    const double ax = std::cos(theta), ay = std::sin(theta), bx = std::cos(theta - 3e-15), by = std::sin(theta - 3e-15);
+    if (!(diamond_arc(ax, ay, bx, by).len > 3.0)) continue;  // rounded onto the start
+    ASSERT_EQ(diamond_arc_one_division(ax, ay, bx, by).len, 0.0) << "theta " << theta;
+    ++reversed;
+  }
+  EXPECT_GT(reversed, 500);
+}
+
 // The free set equals the complement of the blocked arcs, before and after
 // cuts, at random probes away from the arcs' ends (where rounding decides).
 TEST(FreeArcs, ComplementAndCutsMatchBruteForce) {

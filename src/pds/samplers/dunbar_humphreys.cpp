@@ -47,8 +47,8 @@
 // join the front; the sample leaves it. Directions are handled without
 // trigonometry (detail/diamond_arcs.h): an arc's ends are the neighbour's
 // direction rotated by -+acos(d / 2r), which needs one square root, and they
-// are ordered by their "diamond angle", which needs one division; a uniform
-// true angle is drawn by rejection (tested there). The free arcs come from
+// are ordered by their "diamond angle", which needs one division for both
+// ends; a uniform true angle is drawn by rejection (tested there). The free arcs come from
 // the blocked ones without sorting (FreeArcs::assign_complement_unsorted),
 // and on processors with AVX-512 the blocked arcs and their complement are
 // computed eight at a time, with the same bits as the scalar code (see
@@ -306,14 +306,21 @@ struct ScalarNeighbours {
   }
 
   /// Appends the arc each neighbour blocks: the directions within
-  /// acos(d / 2rc) of its own; rotating (dx, dy) by -+ that angle gives
-  /// (dx +- dy k, dy -+ dx k) up to scale, with k = tan = sqrt((2rc)^2 - d^2) / d.
-  static void block(double reach2, const Point<2>& p, bool seam, Neighbourhood& nb) {
+  /// acos(d / 2rc) of its own. Rotating (dx, dy) by -+ that angle gives
+  /// (dx +- dy k, dy -+ dx k) up to scale, with k = sqrt((2rc)^2 - d^2) / d;
+  /// scaled by d^2 that is (dx d^2 +- dy t, dy d^2 -+ dx t) with
+  /// t = sqrt(((2rc)^2 - d^2) d^2): one square root and no division, and then
+  /// one division for both ends (diamond_arc_one_division). Offsets are
+  /// first divided by 2rc (times its reciprocal), so that the products stay
+  /// near 1 for any radius.
+  static void block(double inv_reach, const Point<2>& p, bool seam, Neighbourhood& nb) {
     for (int i = 0; i < nb.count; ++i) {
       const double dx = seam ? nb.dx[i] : nb.sx[i] - p[0], dy = seam ? nb.dy[i] : nb.sy[i] - p[1];
-      const double d2 = dx * dx + dy * dy;
-      const double k = std::sqrt((reach2 - d2) / d2);
-      const detail::DiamondArc a = detail::diamond_arc(dx + dy * k, dy - dx * k, dx - dy * k, dy + dx * k);
+      const double ex = dx * inv_reach, ey = dy * inv_reach;
+      const double e2 = ex * ex + ey * ey;
+      const double t = std::sqrt(std::max(1.0 - e2, 0.0) * e2);
+      const double ax = ex * e2, ay = ey * e2, bx = ey * t, by = ex * t;
+      const detail::DiamondArc a = detail::diamond_arc_one_division(ax + bx, ay - by, ax - bx, ay + by);
       nb.lo[nb.blocked] = a.lo;
       nb.len[nb.blocked] = a.len;
       ++nb.blocked;
@@ -362,22 +369,21 @@ struct Avx512Neighbours {
                     std::max(std::max(lanes[4], lanes[5]), std::max(lanes[6], lanes[7])));
   }
   /// Steps of 8 covering n: 2 in the usual case.
-  static int steps(int n) { return n <= kUsual ? kUsual / 8 : (n + 7) / 8; }
+  static int steps(int n) { return n <= 8 ? 1 : (n <= kUsual ? kUsual / 8 : (n + 7) / 8); }
 
-  /// The same IEEE steps as diamond_angle: 2 - copysign(1 + x / (|x| + |y|), y),
-  /// the copysign as bit operations on the sign bit.
-  PDS_AVX512 static __m512d diamond_angle(__m512d x, __m512d y) {
+  /// 2 - copysign(1 + u, y): a diamond angle from its quotient u, as in
+  /// diamond_arc_one_division, the copysign as bit operations on the sign bit.
+  PDS_AVX512 static __m512d diamond_angle(__m512d u, __m512d y) {
     const __m512i sign = _mm512_set1_epi64(static_cast<long long>(0x8000000000000000ull));
-    const __m512d u = _mm512_div_pd(x, _mm512_add_pd(_mm512_abs_pd(x), _mm512_abs_pd(y)));
-    const __m512d v = _mm512_add_pd(_mm512_set1_pd(1.0), u);
-    const __m512i signed_v = _mm512_or_si512(_mm512_castpd_si512(_mm512_abs_pd(v)),
-                                             _mm512_and_si512(sign, _mm512_castpd_si512(y)));  // copysign(v, y)
+    const __m512d v = _mm512_abs_pd(_mm512_add_pd(_mm512_set1_pd(1.0), u));
+    const __m512i signed_v = _mm512_or_si512(_mm512_castpd_si512(v), _mm512_and_si512(sign, _mm512_castpd_si512(y)));
     return _mm512_sub_pd(_mm512_set1_pd(2.0), _mm512_castsi512_pd(signed_v));
   }
 
   /// As ScalarNeighbours::block, eight neighbours per step.
-  PDS_AVX512 static void block(double reach2, const Point<2>& p, bool seam, Neighbourhood& nb) {
-    const __m512d limit = _mm512_set1_pd(reach2), four = _mm512_set1_pd(4.0), one = _mm512_set1_pd(1.0);
+  PDS_AVX512 static void block(double inv_reach, const Point<2>& p, bool seam, Neighbourhood& nb) {
+    const __m512d scale = _mm512_set1_pd(inv_reach), four = _mm512_set1_pd(4.0), one = _mm512_set1_pd(1.0);
+    const __m512d zero = _mm512_setzero_pd(), three = _mm512_set1_pd(3.0);
     const __m512d px = _mm512_set1_pd(p[0]), py = _mm512_set1_pd(p[1]);
     for (int step = 0, n = steps(nb.count); step < n; ++step) {
       const int i = 8 * step;
@@ -385,20 +391,31 @@ struct Avx512Neighbours {
       __m512d dx, dy;
       if (seam) {
         dx = _mm512_maskz_loadu_pd(live, nb.dx + i), dy = _mm512_maskz_loadu_pd(live, nb.dy + i);
-      } else {  // the gather's subtraction again (dead lanes give 0)
-        dx = _mm512_maskz_sub_pd(live, _mm512_maskz_loadu_pd(live, nb.sx + i), px);
-        dy = _mm512_maskz_sub_pd(live, _mm512_maskz_loadu_pd(live, nb.sy + i), py);
+      } else {  // the gather's subtraction again
+        dx = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, nb.sx + i), px);
+        dy = _mm512_sub_pd(_mm512_maskz_loadu_pd(live, nb.sy + i), py);
       }
-      // Dead lanes divide by 1, not 0.
-      const __m512d d2 = _mm512_mask_add_pd(one, live, _mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy));
-      const __m512d ratio = _mm512_div_pd(_mm512_sub_pd(limit, d2), d2);
-      const __m512d k = _mm512_mask_sqrt_pd(ratio, 0xFF, ratio);  // (the unmasked form warns in GCC 12)
-      const __m512d dyk = _mm512_mul_pd(dy, k), dxk = _mm512_mul_pd(dx, k);
-      __m512d lo = diamond_angle(_mm512_add_pd(dx, dyk), _mm512_sub_pd(dy, dxk));
-      __m512d len = _mm512_sub_pd(diamond_angle(_mm512_sub_pd(dx, dyk), _mm512_add_pd(dy, dxk)), lo);
+      // Dead lanes compute on (1, 0): no division by 0.
+      const __m512d ex = _mm512_mask_mul_pd(one, live, dx, scale), ey = _mm512_maskz_mul_pd(live, dy, scale);
+      const __m512d e2 = _mm512_add_pd(_mm512_mul_pd(ex, ex), _mm512_mul_pd(ey, ey));
+      const __m512d rest = _mm512_sub_pd(one, e2);
+      const __m512d room = _mm512_mul_pd(_mm512_mask_max_pd(rest, 0xFF, rest, zero), e2);  // (masked: see t)
+      const __m512d t = _mm512_mask_sqrt_pd(room, 0xFF, room);  // (the unmasked form warns in GCC 12)
+      const __m512d ax = _mm512_mul_pd(ex, e2), ay = _mm512_mul_pd(ey, e2);
+      const __m512d bx = _mm512_mul_pd(ey, t), by = _mm512_mul_pd(ex, t);
+      const __m512d x1 = _mm512_add_pd(ax, bx), y1 = _mm512_sub_pd(ay, by);
+      const __m512d x2 = _mm512_sub_pd(ax, bx), y2 = _mm512_add_pd(ay, by);
+      const __m512d s1 = _mm512_add_pd(_mm512_abs_pd(x1), _mm512_abs_pd(y1));
+      const __m512d s2 = _mm512_add_pd(_mm512_abs_pd(x2), _mm512_abs_pd(y2));
+      const __m512d inv = _mm512_div_pd(one, _mm512_mul_pd(s1, s2));
+      const __m512d q1 = _mm512_mul_pd(_mm512_mul_pd(x1, s2), inv), q2 = _mm512_mul_pd(_mm512_mul_pd(x2, s1), inv);
+      const __m512d u1 = _mm512_mask_min_pd(q1, 0xFF, q1, one), u2 = _mm512_mask_min_pd(q2, 0xFF, q2, one);
+      __m512d lo = diamond_angle(u1, y1);
+      __m512d len = _mm512_sub_pd(diamond_angle(u2, y2), lo);
       // lo -= 4 (lo >= 4), len += 4 (len < 0): the same exact subtraction and addition of 0 or 4.
       lo = _mm512_sub_pd(lo, _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(lo, four, _CMP_GE_OQ), four));
-      len = _mm512_add_pd(len, _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(len, _mm512_setzero_pd(), _CMP_LT_OQ), four));
+      len = _mm512_add_pd(len, _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(len, zero, _CMP_LT_OQ), four));
+      len = _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(len, three, _CMP_LE_OQ), len);  // len * (len <= 3)
       _mm512_storeu_pd(nb.lo + nb.blocked + i, lo);
       _mm512_storeu_pd(nb.len + nb.blocked + i, len);
     }
@@ -501,7 +518,7 @@ template <class Kernel>
   Rng rng(seed);
   append_sample(points, grid, uniform_point(rng, domain));
 
-  const double reach2 = 4.0 * rc * rc;
+  const double reach2 = 4.0 * rc * rc, inv_reach = 1.0 / (2.0 * rc);
   const double sin60 = std::sqrt(3.0) / 2.0;
   detail::FreeArcs arcs;
   Neighbourhood nb;
@@ -534,7 +551,7 @@ template <class Kernel>
     // (Gathered by scalar loads in both kernels: AVX-512 gathers of the
     // points, seven rows of them, measured slower here.)
     ScalarNeighbours::gather(grid, points, domain, p, reach, reach2, nb, seam);
-    Kernel::block(reach2, p, seam, nb);
+    Kernel::block(inv_reach, p, seam, nb);
     if (nb.blocked > detail::FreeArcs::kMaxBlocked)
       throw std::logic_error("dunbar-humphreys: more blocked arcs than a circle can have");
     Kernel::complement(nb, arcs);
