@@ -463,17 +463,27 @@ struct Avx512Neighbours {
       first = _mm512_mask_max_pd(first, live[h], first, _mm512_sub_pd(end[h], _mm512_set1_pd(4.0)));
       last = _mm512_mask_max_pd(last, live[h], last, end[h]);
     }
-    const double from = max_lane(first);  // over the arcs and 0
-    covered[0] = covered[1] = _mm512_set1_pd(from);
-    for (int i = 0; i < n; ++i) {
+    // covered_k = max(from, the ends of the arcs listed before k): maxima are
+    // exact in any order, so two chains over alternate arcs (shorter latency)
+    // and `from` last give the scalar kernel's numbers.
+    __m512d even[2] = {_mm512_setzero_pd(), _mm512_setzero_pd()}, odd[2] = {even[0], even[1]};
+    const auto take = [&](int i, __m512d* acc) PDS_AVX512 {
       const __m512d lo_i = _mm512_set1_pd(nb.lo[i]), end_i = _mm512_set1_pd(nb.lo[i] + nb.len[i]);
       const unsigned listed_after = ~((2u << i) - 1);  // the arcs k > i, one bit each
       for (int h = 0; h < 2; ++h) {
         const auto later = static_cast<__mmask8>(listed_after >> (8 * h));
         const __mmask8 after = _mm512_mask_cmp_pd_mask(live[h], lo[h], lo_i, _CMP_GT_OQ) |
                                _mm512_mask_cmp_pd_mask(live[h] & later, lo[h], lo_i, _CMP_EQ_OQ);
-        covered[h] = _mm512_mask_max_pd(covered[h], after, covered[h], end_i);
+        acc[h] = _mm512_mask_max_pd(acc[h], after, acc[h], end_i);
       }
+    };
+    int i = 0;
+    for (; i + 1 < n; i += 2) take(i, even), take(i + 1, odd);
+    if (i < n) take(i, even);
+    const double from = max_lane(first);  // over the arcs and 0
+    for (int h = 0; h < 2; ++h) {
+      const __m512d both = _mm512_mask_max_pd(even[h], 0xFF, even[h], odd[h]);  // (masked: see block)
+      covered[h] = _mm512_mask_max_pd(both, 0xFF, both, _mm512_set1_pd(from));
     }
     const double to = std::max(from, max_lane(last));
     detail::DiamondArc* out = arcs.begin_fill(3 * kUsual);
