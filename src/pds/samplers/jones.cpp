@@ -66,10 +66,18 @@ V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
 double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
 double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
 
+/// As a fan from the first vertex: exact enough for slivers far smaller than
+/// their distance from the origin.
 double area(const std::vector<V2>& poly) {
   double s = 0.0;
-  for (std::size_t i = 0, n = poly.size(); i < n; ++i) s += cross(poly[i], poly[(i + 1) % n]);
+  for (std::size_t i = 1; i + 1 < poly.size(); ++i) s += cross(poly[i] - poly[0], poly[i + 1] - poly[0]);
   return 0.5 * s;
+}
+
+/// Circumcentre of the triangle (0, a, b), as CGAL's circumcenter_translateC2.
+V2 circumcentre(V2 a, V2 b) {
+  const double a2 = dot(a, a), b2 = dot(b, b), den = 2.0 * cross(a, b);
+  return {(b.y * a2 - a.y * b2) / den, (a.x * b2 - b.x * a2) / den};
 }
 
 /// Box, or a torus with unequal periods (CGAL's periodic triangulation needs a
@@ -126,13 +134,17 @@ class PlaneCells {
     }
   }
 
-  /// The Voronoi cell of sample k (unclipped), counter-clockwise.
+  /// The Voronoi cell of sample k (unclipped) relative to its site,
+  /// counter-clockwise.
   void cell(std::size_t k, std::vector<V2>& poly) const {
     const Vertex v = handles_[k * copies_ + copies_ / 2];
+    const auto& p = v->point();
     auto face = dt_.incident_faces(v), done = face;
     do {
-      const auto c = dt_.circumcenter(face);
-      poly.push_back({c.x(), c.y()});
+      const int i = face->index(v);
+      const auto& a = face->vertex((i + 1) % 3)->point();
+      const auto& b = face->vertex((i + 2) % 3)->point();
+      poly.push_back(circumcentre({a.x() - p.x(), a.y() - p.y()}, {b.x() - p.x(), b.y() - p.y()}));
     } while (++face != done);
   }
 
@@ -190,12 +202,12 @@ class TorusCells {
       for (const Vertex c : dt_.periodic_copies(v)) visit(c);
   }
 
-  /// The Voronoi cell of sample k in the frame of its stored point: the
-  /// circumcentres of its faces, each face's vertices shifted by their offsets
-  /// relative to the sample's.
+  /// The Voronoi cell of sample k relative to its site: the circumcentres of
+  /// its faces, each face's vertices shifted by their offsets relative to the
+  /// site's.
   void cell(std::size_t k, std::vector<V2>& poly) const {
     const Vertex v = handles_[k];
-    const V2 p{v->point().x(), v->point().y()};
+    const auto& p = v->point();
     auto face = dt_.incident_faces(v), done = face;
     do {
       const int i = face->index(v);
@@ -205,11 +217,9 @@ class TorusCells {
         const int j = (i + s) % 3;
         const auto d = dt_.get_offset(face, j) - o;
         const auto& q = face->vertex(j)->point();
-        e[s - 1] = {q.x() + d.x() * period_ - p.x, q.y() + d.y() * period_ - p.y};
+        e[s - 1] = {q.x() + d.x() * period_ - p.x(), q.y() + d.y() * period_ - p.y()};
       }
-      // Circumcentre of (0, e0, e1), as CGAL's circumcenter_translateC2.
-      const double a2 = dot(e[0], e[0]), b2 = dot(e[1], e[1]), den = 2.0 * cross(e[0], e[1]);
-      poly.push_back({p.x + (e[1].y * a2 - e[0].y * b2) / den, p.y + (e[0].x * b2 - e[1].x * a2) / den});
+      poly.push_back(circumcentre(e[0], e[1]));
     } while (++face != done);
   }
 
@@ -272,15 +282,18 @@ class JonesSampler {
     return {p[0], p[1]};
   }
 
-  /// The Voronoi cell of sample k (clipped to the box), counter-clockwise.
+  /// The Voronoi cell of sample k (clipped to the box) relative to its site,
+  /// counter-clockwise. Relative coordinates keep the precision of small
+  /// pieces however far the domain lies from the origin.
   std::vector<V2> cell(std::size_t k) const {
     std::vector<V2> poly;
     cells_.cell(k, poly);
     if (!domain_.periodic) {
-      for (int axis = 0; axis < 2; ++axis) {
-        clip(poly, axis, domain_.lo[axis], +1.0);
-        clip(poly, axis, domain_.hi[axis], -1.0);
-      }
+      const V2 p = site(k);
+      clip(poly, 0, domain_.lo[0] - p.x, +1.0);
+      clip(poly, 0, domain_.hi[0] - p.x, -1.0);
+      clip(poly, 1, domain_.lo[1] - p.y, +1.0);
+      clip(poly, 1, domain_.hi[1] - p.y, -1.0);
     }
     return poly;
   }
@@ -305,15 +318,14 @@ class JonesSampler {
   }
 
   /// Convex pieces that together contain the part of the cell outside the
-  /// disk of sample k (see the file comment).
+  /// disk of sample k (see the file comment), relative to its site.
   std::vector<std::vector<V2>> pieces(std::size_t k) const {
     const std::vector<V2> poly = cell(k);
     std::vector<std::vector<V2>> result;
     const std::size_t n = poly.size();
     if (n < 3) return result;
-    const V2 p = site(k);
     bool all_covered = true;
-    for (const V2& v : poly) all_covered = all_covered && dot(v - p, v - p) <= cover2_;
+    for (const V2& v : poly) all_covered = all_covered && dot(v, v) <= cover2_;
     if (all_covered) return result;
 
     // The boundary as a ring of vertices and circle crossings.
@@ -326,9 +338,9 @@ class JonesSampler {
     bool any_crossing = false;
     for (std::size_t i = 0; i < n; ++i) {
       const V2 a = poly[i], b = poly[(i + 1) % n];
-      const V2 ab = b - a, pa = a - p;
-      const double A = dot(ab, ab), B = dot(pa, ab), C = dot(pa, pa) - r2_;
-      const bool a_in = C <= 0.0, b_in = dot(b - p, b - p) - r2_ <= 0.0;
+      const V2 ab = b - a;
+      const double A = dot(ab, ab), B = dot(a, ab), C = dot(a, a) - r2_;
+      const bool a_in = C <= 0.0, b_in = dot(b, b) - r2_ <= 0.0;
       ring.push_back({a, a_in ? kInside : kOutside});
       if (!(A > 0.0)) continue;
       const double disc = std::max(0.0, B * B - A * C);
@@ -407,9 +419,9 @@ class JonesSampler {
     if (s + w > 1.0) s = 1.0 - s, w = 1.0 - w;
     const V2 e1 = poly[t] - poly[0], e2 = poly[t + 1] - poly[0];
     const V2 x{poly[0].x + s * e1.x + w * e2.x, poly[0].y + s * e1.y + w * e2.y};
+    if (dot(x, x) < r2_) return std::nullopt;
     const V2 p = site(k);
-    if (dot(x - p, x - p) < r2_) return std::nullopt;
-    const Point<2> q = domain_.wrap(Point<2>{{x.x, x.y}});
+    const Point<2> q = domain_.wrap(Point<2>{{p.x + x.x, p.y + x.y}});
     if (!domain_.contains(q) || grid_.any_closer_than(q, radius_)) return std::nullopt;
     return q;
   }
