@@ -44,7 +44,7 @@ TEST(Jones, MinimumDistanceInsideAndMaximalOnSquareAndOblongTori) {
 
 // Tori of 4 to 6 radii: CGAL keeps the 9-sheeted covering for the whole run
 // at 4 radii (an edge longer than 0.407 periods remains) and converts to the
-// 1-sheeted one near the end at 5 and 6; the oblong ones use the 3 x 3 copies.
+// 1-sheeted one late in the run at 5 and 6; the oblong ones use the 3 x 3 copies.
 TEST(Jones, SmallToriStayMaximalAndSpaced) {
   const double r = 1.0;
   const std::vector<std::array<double, 2>> periods{{4.0, 4.0}, {4.5, 4.5}, {5.0, 5.0},
