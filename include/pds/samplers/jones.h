@@ -18,7 +18,8 @@ struct JonesParams {
 /// T. R. Jones, "Efficient generation of Poisson-disk sampling patterns",
 /// journal of graphics tools 11(2), 2006.
 ///
-/// Keeps the Voronoi diagram of the samples (CGAL's Delaunay triangulation).
+/// Keeps the Voronoi diagram of the samples (CGAL's Delaunay triangulation;
+/// the periodic one on a square torus, 9 copies of each sample on an oblong one).
 /// The available area of a Voronoi cell is the part of the cell outside the
 /// disk of radius `radius` around its site; each new sample is drawn uniformly
 /// from the union of all available areas (a cell chosen by area through a sum
