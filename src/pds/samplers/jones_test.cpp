@@ -7,6 +7,7 @@
 #include "pds/analysis/maximality.h"
 #include "pds/error.h"
 #include "pds/samplers/dart_throwing.h"
+#include "set_checks.h"
 
 namespace pds {
 namespace {
@@ -17,11 +18,7 @@ TEST(Jones, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
     const auto domain = testing_stats::offset_domain<2>(torus);
     const auto points = jones({r}, domain, 5);
     ASSERT_GT(points.size(), 1500u);
-    EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
-    for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
-    const auto mx = check_maximality(points, domain, r);
-    EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
-                            << mx.gap_distance;
+    EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, r));
   }
 }
 
@@ -34,11 +31,7 @@ TEST(Jones, MinimumDistanceInsideAndMaximalOnSquareAndOblongTori) {
     ASSERT_TRUE(domain.periodic);
     const auto points = jones({r}, domain, 9);
     ASSERT_GT(points.size(), 0.6 * domain.volume() / (r * r));  // saturation: 0.684 / r^2
-    EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
-    for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
-    const auto mx = check_maximality(points, domain, r);
-    EXPECT_TRUE(mx.maximal) << domain << " gap at " << (mx.gap ? *mx.gap : Point<2>{}) << " distance "
-                            << mx.gap_distance;
+    EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, r));
   }
 }
 
@@ -54,11 +47,7 @@ TEST(Jones, SmallToriStayMaximalAndSpaced) {
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
       const auto points = jones({r}, domain, seed);
       ASSERT_GE(points.size(), 4u) << domain << " seed " << seed;
-      EXPECT_GE(min_distance_brute_force(points, domain).distance, r) << domain << " seed " << seed;
-      for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
-      const auto mx = check_maximality(points, domain, r);
-      EXPECT_TRUE(mx.maximal) << domain << " seed " << seed << " gap at " << (mx.gap ? *mx.gap : Point<2>{})
-                              << " distance " << mx.gap_distance;
+      EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, r)) << "seed " << seed;
       EXPECT_EQ(points, jones({r}, domain, seed));
     }
   }
@@ -76,12 +65,9 @@ TEST(Jones, MaximalFarFromTheOrigin) {
     int gaps = 0;
     for (std::uint64_t seed = 1; seed <= 100; ++seed) {
       const auto points = jones({r}, domain, seed);
-      EXPECT_GE(min_distance_brute_force(points, domain).distance, r);
-      const auto mx = check_maximality(points, domain, r);
-      if (!mx.maximal) ++gaps;
-      EXPECT_TRUE(mx.maximal) << domain << " seed " << seed << " gap at " << (mx.gap ? *mx.gap : Point<2>{})
-                              << " distance " << mx.gap_distance;
-      if (gaps > 3) break;
+      const auto check = testing_checks::maximal_poisson_disk_set(points, domain, r);
+      EXPECT_TRUE(check) << "seed " << seed;
+      if (!check && ++gaps > 3) break;
     }
   }
 }
