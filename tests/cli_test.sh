@@ -44,6 +44,9 @@ expect_exit 2 "above the cap" -- generate random --count 200000000
 expect_exit 2 "above the cap of 1000" -- generate regular --radius 0.001 --max-points 1000
 expect_exit 2 "radius 1e-09 over a domain of volume 1 could produce up to 1.38564e+18 points" -- generate dunbar-humphreys --radius 1e-9 --torus
 expect_exit 2 "axis 0 has 1 for radius 0.3" -- generate dunbar-humphreys --radius 0.3 --torus
+# Coordinates whose spacing is near 1e-4 of the radius: a clear failure, not a hang or a bad set.
+expect_exit 1 "the coordinates are too coarse for this radius" -- generate dunbar-humphreys --radius 0.2 --torus \
+  --bounds 10000000000000,10000000000000,10000000000002,10000000000002
 expect_exit 2 "dimension 4 is not supported" -- generate random --count 10 --dim 4
 expect_exit 2 "axis 0 is empty" -- generate random --count 10 --bounds 1,0,1,1
 expect_exit 2 "bounds needs 4 values" -- generate random --count 10 --bounds 0,0,1

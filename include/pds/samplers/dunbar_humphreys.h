@@ -2,7 +2,9 @@
 // The spatial data structure of Dunbar & Humphreys: maximal Poisson disk sets
 // in 2D in O(N), by boundary sampling or by scalloped sectors.
 
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "pds/domain.h"
 #include "pds/limits.h"
@@ -64,6 +66,12 @@ bool dunbar_humphreys_has_vector_kernel();
 /// vector kernel where there is none throws InvalidArgument.
 PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed,
                                       bool vector_kernel);
+/// The free arcs (start, length in diamond measure; detail/diamond_arcs.h)
+/// of the circle of radius r(1 + 1e-10) around p that the given neighbours
+/// (at most 32, plain offsets) leave, by the chosen kernel: for the test that
+/// both kernels agree bit for bit on neighbourhoods of any size.
+std::vector<std::array<double, 2>> dunbar_humphreys_free_arcs(const Point<2>& p, const PointSet<2>& neighbours,
+                                                              double radius, bool vector_kernel);
 }  // namespace detail
 
 }  // namespace pds

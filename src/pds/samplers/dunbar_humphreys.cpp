@@ -58,8 +58,11 @@
 // on the stored coordinates before it is accepted). Maximal: if some region
 // were uncovered, its boundary would contain an arc of some sample's circle
 // that no disk covers, and that sample would still be on the front. The
-// circle radius is r(1 + 1e-10) so that rounding can never put two samples
-// closer than r; hence every point is within r(1 + 1e-10) of a sample.
+// circle radius is r(1 + 1e-10) so that rounding does not put a new sample
+// closer than r to the others while the coordinates' spacing (ulp) is far
+// below 1e-10 r; hence every point is within r(1 + 1e-10) of a sample.
+// Coarser coordinates (a tiny radius far from the origin) make the exact
+// check reject candidates, and the run stops with a Failure saying so.
 //
 // Complexity. Each sample is processed once with a constant number of
 // neighbours (7.6 within 2r on average): O(N) time. Memory: the output and
@@ -107,6 +110,9 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
+/// Cells of a grid window, each side of the centre cell, per axis.
+using Reach = std::array<int, 2>;
+
 /// One sample index per cell (or -1). Cells have edge <= r / sqrt(2), so a
 /// set with minimum distance r has at most one sample per cell; a flat int32
 /// array is smaller and faster here than the general pds::Grid's lists.
@@ -124,9 +130,11 @@ class CellGrid {
     cells_.assign(static_cast<std::size_t>(n_[0]) * n_[1], -1);
   }
   int n(int axis) const { return n_[axis]; }
-  /// How many cells around a sample's cell can hold a sample within `distance`.
-  int reach(double distance) const {
-    return static_cast<int>(std::ceil(distance * std::max(inv_edge_[0], inv_edge_[1])));
+  /// How many cells around a sample's cell can hold a sample within
+  /// `distance`, per axis (a box one cell thin across has far smaller cells
+  /// along its other axis).
+  Reach reach(double distance) const {
+    return {static_cast<int>(std::ceil(distance * inv_edge_[0])), static_cast<int>(std::ceil(distance * inv_edge_[1]))};
   }
   int coord(double x, int axis) const {
     const int c = static_cast<int>((x - domain_.lo[axis]) * inv_edge_[axis]);
@@ -138,7 +146,7 @@ class CellGrid {
   /// Calls f(index) for every stored sample in the cells within `reach`
   /// cells of p's cell (each cell once, wrapping on a torus).
   template <class F>
-  void for_each_near(const Point<2>& p, int reach, F&& f) const {
+  void for_each_near(const Point<2>& p, Reach reach, F&& f) const {
     int first[2], last[2];
     window(p, reach, first, last);
     for (int y = first[1]; y <= last[1]; ++y) {
@@ -153,16 +161,17 @@ class CellGrid {
   /// The window of cells within `reach` of p's cell as [first, last] per
   /// axis; true when it needs no nearest image (in a box always; on a torus
   /// when it neither crosses a seam nor covers a whole axis).
-  bool plain_window(const Point<2>& p, int reach, int first[2], int last[2]) const {
+  bool plain_window(const Point<2>& p, Reach reach, int first[2], int last[2]) const {
     window(p, reach, first, last);
     return !(first[0] < 0 || first[1] < 0 || last[0] >= n_[0] || last[1] >= n_[1] ||
              (domain_.periodic && (last[0] - first[0] + 1 == n_[0] || last[1] - first[1] + 1 == n_[1])));
   }
   std::size_t bytes() const { return cells_.size() * sizeof(std::int32_t); }
   /// Asks for the rows of p's window to be brought into the cache.
-  void prefetch_window(const Point<2>& p, int reach) const {
-    const int cx = std::max(coord(p[0], 0) - reach, 0), cy = coord(p[1], 1);
-    for (int y = cy - reach; y <= cy + reach; ++y) __builtin_prefetch(row(y) + cx);
+  void prefetch_window(const Point<2>& p, Reach reach) const {
+    int first[2], last[2];
+    window(p, reach, first, last);
+    for (int y = first[1]; y <= last[1]; ++y) __builtin_prefetch(row(y) + std::max(first[0], 0));
   }
   /// Row y of the grid (y in [-n, 2n), wrapped).
   const std::int32_t* row_pointer(int y) const { return row(y); }
@@ -176,7 +185,7 @@ class CellGrid {
   /// The same samples written to `out` (room for (2 reach + 1)^2), their
   /// number returned: no branch per cell, for the hot loop of variant 0.
   /// `seam` tells whether the window crossed a torus seam.
-  int collect_near(const Point<2>& p, int reach, std::int32_t* out, bool& seam) const {
+  int collect_near(const Point<2>& p, Reach reach, std::int32_t* out, bool& seam) const {
     int first[2], last[2];
     seam = !plain_window(p, reach, first, last);
     const int width = last[0] - first[0] + 1;
@@ -209,11 +218,11 @@ class CellGrid {
  private:
   /// The cell range [first, last] per axis within `reach` of p's cell:
   /// clipped in a box, possibly past the ends (to be wrapped) on a torus.
-  void window(const Point<2>& p, int reach, int first[2], int last[2]) const {
+  void window(const Point<2>& p, Reach reach, int first[2], int last[2]) const {
     for (int i = 0; i < 2; ++i) {
       const int c = coord(p[i], i);
-      first[i] = c - reach;
-      last[i] = c + reach;
+      first[i] = c - reach[i];
+      last[i] = c + reach[i];
       if (domain_.periodic) {
         if (last[i] - first[i] + 1 >= n_[i]) {
           first[i] = 0;
@@ -282,7 +291,7 @@ struct ScalarNeighbours {
   /// (the others are at least r away, and a difference of distinct doubles
   /// is not 0), so d2 > 0 leaves it out.
   static void gather(const CellGrid& grid, const PointSet<2>& points, const Domain<2>& domain, const Point<2>& p,
-                     int reach, double reach2, Neighbourhood& nb, bool& seam) {
+                     Reach reach, double reach2, Neighbourhood& nb, bool& seam) {
     std::int32_t cells[CellGrid::kMaxWindow * CellGrid::kMaxWindow];
     const int ncells = grid.collect_near(p, reach, cells, seam);
     int n = 0;
@@ -526,7 +535,7 @@ template <class Kernel>
             detail::format_number(r));
 
   CellGrid grid(domain, r / std::sqrt(2.0));
-  const int reach = grid.reach(2.0 * rc);  // cells that may hold a sample within 2 rc
+  const Reach reach = grid.reach(2.0 * rc);  // cells that may hold a sample within 2 rc
   PointSet<2> points;
   // Boundary sampling makes about 0.875 samples per r^2 (rho ~ 0.87); reserving
   // that avoids the doubling that would otherwise set the peak memory.
@@ -539,7 +548,7 @@ template <class Kernel>
   detail::FreeArcs arcs;
   Neighbourhood nb;
   // Asking for the grid rows of the front sample four places ahead pays on
-  // grids far larger than the caches (+8% at 10^7 samples, a 100 MB grid) and
+  // grids far larger than the caches (+8-9% at 10^7 samples, a 100 MB grid) and
   // costs on smaller ones (-2% at 10^6, 10 MB), as measured here.
   const bool prefetch = grid.bytes() > (std::size_t{32} << 20);
   // The front is every sample not yet processed, in insertion order (breadth
@@ -602,7 +611,8 @@ template <class Kernel>
         // dropped leaves a hole of depth about w^2 r / 8). Bounded per front sample.
         if (++rejected > 24)
           throw Failure("dunbar-humphreys: 24 candidates rejected by rounding around one sample (radius " +
-                        detail::format_number(r) + ")");
+                        detail::format_number(r) +
+                        "): the coordinates are too coarse for this radius (a domain far from the origin?)");
         const double sliver = 1e-13 * std::ldexp(1.0, rejected);
         arcs.remove({t - sliver < 0.0 ? t - sliver + 4.0 : t - sliver, 2.0 * sliver});
         continue;
@@ -628,6 +638,45 @@ PointSet<2> boundary_sampling_scalar(const DunbarHumphreysParams& params, const 
 PDS_AVX512 PointSet<2> boundary_sampling_avx512(const DunbarHumphreysParams& params, const Domain<2>& domain,
                                                 std::uint64_t seed) {
   return boundary_sampling_with<Avx512Neighbours>(params, domain, seed);
+}
+#endif
+
+/// One front sample's free arcs from the given neighbours (offsets taken
+/// plainly, no walls) by one kernel's block and complement: the test hook
+/// that reaches the AVX-512 paths for more than 16 arcs, which real
+/// neighbourhoods (13 at most in the runs measured) do not.
+template <class Kernel>
+[[gnu::always_inline]] inline std::vector<std::array<double, 2>> free_arcs_with(const Point<2>& p,
+                                                                                const PointSet<2>& neighbours,
+                                                                                double radius) {
+  if (neighbours.size() > static_cast<std::size_t>(detail::FreeArcs::kMaxBlocked))
+    throw InvalidArgument("dunbar-humphreys: more neighbours than a circle can have");
+  Neighbourhood nb;
+  // Arcs a kernel fails to write stay NaN and show in the result (stack
+  // memory would otherwise hold the other kernel's numbers from the last call).
+  std::fill(std::begin(nb.lo), std::end(nb.lo), std::numeric_limits<double>::quiet_NaN());
+  std::fill(std::begin(nb.len), std::end(nb.len), std::numeric_limits<double>::quiet_NaN());
+  for (const Point<2>& q : neighbours) {
+    nb.sx[nb.count] = q[0];
+    nb.sy[nb.count] = q[1];
+    ++nb.count;
+  }
+  Kernel::block(1.0 / (2.0 * radius * (1.0 + 1e-10)), p, false, nb);
+  detail::FreeArcs arcs;
+  Kernel::complement(nb, arcs);
+  std::vector<std::array<double, 2>> out;
+  for (const detail::DiamondArc& a : arcs.arcs()) out.push_back({a.lo, a.len});
+  return out;
+}
+
+std::vector<std::array<double, 2>> free_arcs_scalar(const Point<2>& p, const PointSet<2>& neighbours, double radius) {
+  return free_arcs_with<ScalarNeighbours>(p, neighbours, radius);
+}
+
+#if PDS_HAVE_AVX512_KERNEL
+PDS_AVX512 std::vector<std::array<double, 2>> free_arcs_avx512(const Point<2>& p, const PointSet<2>& neighbours,
+                                                               double radius) {
+  return free_arcs_with<Avx512Neighbours>(p, neighbours, radius);
 }
 #endif
 
@@ -888,7 +937,7 @@ bool polar_candidate(const Domain<2>& domain, const PointSet<2>& points, const s
 /// The available region of sample `pi` (walls first, then the samples
 /// within 3r, nearest first: they remove the most, which leaves fewer sectors
 /// for the rest to cut), and those samples in `neighbours`.
-void build_region(const Domain<2>& domain, double r, CellGrid& grid, int reach, const PointSet<2>& points,
+void build_region(const Domain<2>& domain, double r, CellGrid& grid, Reach reach, const PointSet<2>& points,
                   std::int32_t pi, ScallopedRegion& region, std::vector<std::int32_t>& neighbours,
                   std::vector<std::array<double, 3>>& offsets) {
   constexpr double kPi = std::numbers::pi;
@@ -930,8 +979,8 @@ PointSet<2> global_scalloped_sampling(const DunbarHumphreysParams& params, const
                                       std::uint64_t seed) {
   const double r = params.radius, r2 = r * r;
   CellGrid grid(domain, r / std::sqrt(2.0));
-  const int reach = grid.reach(3.0 * r);
-  const int reach_2r = grid.reach(2.0 * r);
+  const Reach reach = grid.reach(3.0 * r);
+  const Reach reach_2r = grid.reach(2.0 * r);
   PointSet<2> points;
   points.reserve(static_cast<std::size_t>(0.72 * domain.volume() / r2) + 16);
   detail::SumTree areas;
@@ -986,7 +1035,7 @@ PointSet<2> scalloped_sector_sampling(const DunbarHumphreysParams& params, const
   const double r = params.radius, r2 = r * r;
   CellGrid grid(domain, r / std::sqrt(2.0));
   // Cells that may hold a sample within 3r (the reach of a disk into the annulus).
-  const int reach = grid.reach(3.0 * r);
+  const Reach reach = grid.reach(3.0 * r);
   PointSet<2> points;
   // Variant 1 makes about 0.735 samples per r^2 (rho ~ 0.80); reserving a little more
   // avoids the doubling that would otherwise set the peak memory.
@@ -1062,6 +1111,20 @@ PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const
   if (vector_kernel) throw InvalidArgument("dunbar-humphreys: this build has no vector kernel");
 #endif
   return boundary_sampling_scalar(params, domain, seed);
+}
+
+std::vector<std::array<double, 2>> dunbar_humphreys_free_arcs(const Point<2>& p, const PointSet<2>& neighbours,
+                                                              double radius, bool vector_kernel) {
+#if PDS_HAVE_AVX512_KERNEL
+  if (vector_kernel) {
+    if (!dunbar_humphreys_has_vector_kernel())
+      throw InvalidArgument("dunbar-humphreys: the AVX-512 kernel was asked for on a processor without it");
+    return free_arcs_avx512(p, neighbours, radius);
+  }
+#else
+  if (vector_kernel) throw InvalidArgument("dunbar-humphreys: this build has no vector kernel");
+#endif
+  return free_arcs_scalar(p, neighbours, radius);
 }
 
 }  // namespace detail

@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <numbers>
 
 #include "nn_statistics.h"
 #include "pds/analysis/distance.h"
 #include "pds/analysis/maximality.h"
 #include "pds/error.h"
+#include "pds/rng.h"
 #include "pds/samplers/jones.h"
 #include "set_checks.h"
 
@@ -24,6 +27,24 @@ TEST(DunbarHumphreys, MinimumDistanceInsideAndMaximalOnBoxAndTorus) {
   }
 }
 
+// Boxes less than a cell thick: the grid has one row of cells much thinner
+// than they are wide, so the window's reach is per axis (before, the thin
+// axis set both and boundary sampling stopped with "neighbour window wider
+// than planned").
+TEST(DunbarHumphreys, BoxesThinnerThanACellStayExactAndMaximal) {
+  const double r = 0.002;
+  for (double thickness : {0.001, 0.0005, 0.0014}) {
+    const Domain<2> domain = Domain<2>::box({{0.0, 0.0}}, {{0.3, thickness}});
+    for (int variant : {0, 1, 2}) {
+      DunbarHumphreysParams params{r};
+      params.variant = variant;
+      const auto points = dunbar_humphreys(params, domain, 3);
+      ASSERT_GT(points.size(), 0.3 / (2.0 * r)) << "variant " << variant;
+      EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, r)) << "variant " << variant;
+    }
+  }
+}
+
 // Tori only a few radii wide, where the neighbour window covers a whole axis:
 // the nearest images must still be used there (before that was handled, such
 // tori looped or exhausted memory).
@@ -35,6 +56,31 @@ TEST(DunbarHumphreys, SmallToriStayExactAndMaximal) {
       EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, r)) << "seed " << seed;
     }
   }
+}
+
+// The kernels' blocked arcs and complements agree bit for bit for any number
+// of neighbours, up to the 32 a circle can have with walls: real
+// neighbourhoods stay under 16, where the AVX-512 kernel takes its two-vector
+// path, so only this reaches its longer block and its complement fallback.
+TEST(DunbarHumphreys, KernelsFreeArcsAgreeForAnyNeighbourCount) {
+  if (!detail::dunbar_humphreys_has_vector_kernel()) GTEST_SKIP() << "no AVX-512 (x86-64-v4) here";
+  Rng rng(8);
+  const double r = 0.01;
+  const Point<2> p{{0.3, 0.6}};
+  int nonempty = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int n = 1 + trial % 32;
+    PointSet<2> neighbours;
+    for (int k = 0; k < n; ++k) {
+      const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi), d = rng.uniform(r, 2.0 * r);
+      neighbours.push_back({{p[0] + d * std::cos(angle), p[1] + d * std::sin(angle)}});
+    }
+    const auto scalar = detail::dunbar_humphreys_free_arcs(p, neighbours, r, false);
+    ASSERT_EQ(scalar, detail::dunbar_humphreys_free_arcs(p, neighbours, r, true))
+        << "trial " << trial << ", " << n << " neighbours";
+    nonempty += n > 16 && !scalar.empty();
+  }
+  EXPECT_GT(nonempty, 50);  // the long paths also produced free arcs, not only empty circles
 }
 
 // The AVX-512 neighbourhood kernel and the scalar one make the same points,

@@ -211,12 +211,11 @@ class TorusCells {
     auto face = dt_.incident_faces(v), done = face;
     do {
       const int i = face->index(v);
-      const auto o = dt_.get_offset(face, i);
+      const auto o = dt_.periodic_point(face, i).second;  // (the documented form of get_offset)
       V2 e[2];
       for (int s = 1; s <= 2; ++s) {
-        const int j = (i + s) % 3;
-        const auto d = dt_.get_offset(face, j) - o;
-        const auto& q = face->vertex(j)->point();
+        const auto [q, offset] = dt_.periodic_point(face, (i + s) % 3);
+        const auto d = offset - o;
         e[s - 1] = {q.x() + d.x() * period_ - p.x(), q.y() + d.y() * period_ - p.y()};
       }
       poly.push_back(circumcentre(e[0], e[1]));
