@@ -48,11 +48,11 @@
 // trigonometry (detail/diamond_arcs.h): an arc's ends are the neighbour's
 // direction rotated by -+acos(d / 2r), which needs one square root, and they
 // are ordered by their "diamond angle", which needs one division for both
-// ends; a uniform true angle is drawn by rejection (tested there). The free arcs come from
-// the blocked ones without sorting (FreeArcs::assign_complement_unsorted),
-// and on processors with AVX-512 the blocked arcs and their complement are
-// computed eight at a time, with the same bits as the scalar code (see
-// ScalarNeighbours below).
+// ends; a uniform true angle is drawn by rejection (tested there). The free
+// arcs come from the blocked ones without sorting
+// (FreeArcs::assign_complement_unsorted), and on processors with AVX-512 the
+// blocked arcs and their complement are computed eight at a time, with the
+// same bits as the scalar code (see ScalarNeighbours below).
 //
 // Guarantees. Every new sample is at distance >= r from every other (checked
 // on the stored coordinates before it is accepted). Maximal: if some region
@@ -368,9 +368,10 @@ struct ScalarNeighbours {
 #define PDS_AVX512 __attribute__((target("arch=x86-64-v4")))
 
 struct Avx512Neighbours {
-  // Up to 16 neighbours or arcs (the usual case) sit in two vectors; block
-  // runs both steps, masked past the end, since a trip count that follows the
-  // random neighbourhood would cost a mispredicted branch.
+  // Up to 16 neighbours or arcs (the usual case) sit in two vectors. block and
+  // the exact check run one masked step for up to 8 (82% of front samples,
+  // so the branch is mostly predicted) and two up to 16; the complement
+  // always handles both vectors.
   static constexpr int kUsual = 16;
 
   /// The lanes [0, n) of an 8-lane step, for any n (clamped to 0..8).
@@ -383,7 +384,7 @@ struct Avx512Neighbours {
     return std::max(std::max(std::max(lanes[0], lanes[1]), std::max(lanes[2], lanes[3])),
                     std::max(std::max(lanes[4], lanes[5]), std::max(lanes[6], lanes[7])));
   }
-  /// Steps of 8 covering n: 2 in the usual case.
+  /// Steps of 8 covering n: 1 up to 8, 2 up to 16, then as many as needed.
   static int steps(int n) { return n <= 8 ? 1 : (n <= kUsual ? kUsual / 8 : (n + 7) / 8); }
 
   /// 2 - copysign(1 + u, y): a diamond angle from its quotient u, as in
