@@ -14,7 +14,12 @@ namespace pds {
 /// 10^8 points in 3D take 2.4 GB as doubles.
 inline constexpr std::uint64_t kDefaultMaxPoints = 100'000'000;
 
-/// Throws InvalidArgument unless r is positive and finite.
+/// The radii every method accepts: squared distances near r^2 (and up to
+/// (3r)^2) stay normal doubles, so "at least r apart" is decided exactly.
+inline constexpr double kMinRadius = 1e-150, kMaxRadius = 1e150;
+
+/// Throws InvalidArgument unless r is positive, finite and within
+/// [kMinRadius, kMaxRadius].
 void require_radius(double r, const char* name = "radius");
 
 /// Throws InvalidArgument unless 1 <= n <= max_points.

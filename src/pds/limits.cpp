@@ -24,6 +24,12 @@ double physical_memory_bytes() {
 void require_radius(double r, const char* name) {
   if (!std::isfinite(r) || !(r > 0.0))
     throw InvalidArgument(std::string(name) + " must be positive and finite, got " + detail::format_number(r));
+  // Spacing is decided on squared distances against r^2: below this r^2 is
+  // subnormal and has lost the bits that decide it; above, (3r)^2 overflows.
+  if (!(r >= kMinRadius && r <= kMaxRadius))
+    throw InvalidArgument(std::string(name) + " " + detail::format_number(r) +
+                          " is outside [1e-150, 1e150]: its squared distances would leave the normal doubles "
+                          "(scale the domain instead)");
 }
 
 void require_count(std::uint64_t n, std::uint64_t max_points) {

@@ -53,6 +53,9 @@ TEST(Registry, RejectsBadRadii) {
   for (double r : {0.0, -0.1, double(NAN), double(INFINITY), -double(INFINITY)})
     expect_rejected("regular", with_radius(r), "radius must be positive and finite");
   expect_rejected("random", with_radius(0.1), "random does not take --radius");
+  // Radii whose squares leave the normal doubles: spacing could not be decided exactly.
+  for (double r : {1e-151, 1e-200, 4.9e-324, 1e151, 1e300})
+    expect_rejected("regular", with_radius(r), "is outside [1e-150, 1e150]");
 }
 
 TEST(Registry, RejectsBadCounts) {
