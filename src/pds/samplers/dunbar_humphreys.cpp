@@ -1098,32 +1098,35 @@ bool dunbar_humphreys_has_vector_kernel() {
 #endif
 }
 
+namespace {
+/// Throws InvalidArgument when the vector kernel is asked for where there is none.
+void check_vector_kernel_request(bool vector_kernel) {
+  if (!vector_kernel) return;
+#if PDS_HAVE_AVX512_KERNEL
+  if (!dunbar_humphreys_has_vector_kernel())
+    throw InvalidArgument("dunbar-humphreys: the AVX-512 kernel was asked for on a processor without it");
+#else
+  throw InvalidArgument("dunbar-humphreys: this build has no vector kernel");
+#endif
+}
+}  // namespace
+
 PointSet<2> dunbar_humphreys_boundary(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed,
                                       bool vector_kernel) {
   domain.validate();
   require_radius_budget(domain, params.radius, params.max_points);
+  check_vector_kernel_request(vector_kernel);
 #if PDS_HAVE_AVX512_KERNEL
-  if (vector_kernel) {
-    if (!dunbar_humphreys_has_vector_kernel())
-      throw InvalidArgument("dunbar-humphreys: the AVX-512 kernel was asked for on a processor without it");
-    return boundary_sampling_avx512(params, domain, seed);
-  }
-#else
-  if (vector_kernel) throw InvalidArgument("dunbar-humphreys: this build has no vector kernel");
+  if (vector_kernel) return boundary_sampling_avx512(params, domain, seed);
 #endif
   return boundary_sampling_scalar(params, domain, seed);
 }
 
 std::vector<std::array<double, 2>> dunbar_humphreys_free_arcs(const Point<2>& p, const PointSet<2>& neighbours,
                                                               double radius, bool vector_kernel) {
+  check_vector_kernel_request(vector_kernel);
 #if PDS_HAVE_AVX512_KERNEL
-  if (vector_kernel) {
-    if (!dunbar_humphreys_has_vector_kernel())
-      throw InvalidArgument("dunbar-humphreys: the AVX-512 kernel was asked for on a processor without it");
-    return free_arcs_avx512(p, neighbours, radius);
-  }
-#else
-  if (vector_kernel) throw InvalidArgument("dunbar-humphreys: this build has no vector kernel");
+  if (vector_kernel) return free_arcs_avx512(p, neighbours, radius);
 #endif
   return free_arcs_scalar(p, neighbours, radius);
 }
