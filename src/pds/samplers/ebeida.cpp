@@ -70,6 +70,7 @@ constexpr double kFirstLevelTime = 1.5;  // expected darts per cell at level 0 (
 constexpr double kLevelTime = 0.5;       // expected darts per sub-cell at every further level
 constexpr double kWindow = 0.5;          // darts are settled window by window in time
 constexpr int kMaxDepth = 2000;          // a chain of ever earlier darts (measured: 14 at 10^6); keeps the stack small
+constexpr std::size_t kMaxSubsPerCell = 4;  // open sub-cells per grid cell at any level (measured: at most 1.6)
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// -ln(u) for u in (0, 1], with frexp and + - * / only, so that the waiting
@@ -156,9 +157,11 @@ class EbeidaSampler {
     std::array<int, D> reach;
     for (int a = 0; a < D; ++a) {
       const double edge = domain.extent(a) / n_[a];
+      // On a torus whose period is short next to r, offsets beyond half the
+      // cells revisit cells but reach other periodic images of their
+      // samples; refine() needs every image that can cover a sub-cell, so the
+      // reach is not cut at half a period.
       reach[a] = static_cast<int>(std::ceil(r / edge)) + 1;
-      // On a torus, an offset of a whole period or more only revisits cells.
-      if (domain.periodic) reach[a] = std::min(reach[a], n_[a] / 2 + 1);
       wrap_[a].resize(static_cast<std::size_t>(n_[a] + 2 * reach[a]));
       for (int i = -reach[a]; i < n_[a] + reach[a]; ++i) {
         const int wrapped = domain.periodic ? ((i % n_[a]) + n_[a]) % n_[a] : (i >= 0 && i < n_[a] ? i : -1);
@@ -273,6 +276,35 @@ class EbeidaSampler {
     return false;
   }
 
+  /// Calls f(neighbour cell index, periods) for every offset of
+  /// `neighbours`: `periods` says by how many whole periods along each axis
+  /// the cell at that offset lies from the stored cell (zero on a box and
+  /// away from a torus's seam). Cells outside a box are skipped.
+  template <class F>
+  void for_each_image(const Neighbours& neighbours, const std::array<int, D>& c, std::uint32_t cell, F&& f) const {
+    bool interior = true;
+    for (int a = 0; a < D; ++a) interior = interior && c[a] >= reach_[a] && c[a] + reach_[a] < n_[a];
+    const std::array<int, D> none{};
+    if (interior) {
+      for (const std::ptrdiff_t off : neighbours.linear)
+        f(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + off), none);
+      return;
+    }
+    for (const auto& off : neighbours.offsets) {
+      std::size_t index = 0;
+      bool inside = true;
+      std::array<int, D> periods{};
+      for (int a = 0; a < D && inside; ++a) {
+        const int u = c[a] + off[a];
+        const int w = wrap_[a][static_cast<std::size_t>(u + reach_[a])];
+        inside = w >= 0;
+        index += static_cast<std::size_t>(w) * stride_[a];
+        periods[a] = (u - w) / n_[a];  // exact: u - w is a whole number of periods
+      }
+      if (inside) f(index, periods);
+    }
+  }
+
   void add(Neighbours& neighbours, const std::array<int, D>& off) const {
     neighbours.offsets.push_back(off);
     std::ptrdiff_t linear = 0;
@@ -358,10 +390,14 @@ class EbeidaSampler {
   /// Whether every corner of the box is closer to s than r minus the slack:
   /// the farthest corner takes, along each axis, the farther of the two faces
   /// (the same sum, term for term, as distance2 to that corner).
+  /// On a torus the two faces must see the same image of s: a box that holds
+  /// the point half a period from s has its farthest point inside, not at a
+  /// corner, and is reported as not covered (refine() then decides it).
   bool covers_box(const Point<D>& s, const Point<D>& lo, const std::array<double, D>& edge) const {
     double far2 = 0.0;
     for (int a = 0; a < D; ++a) {
       const double near_face = domain_.delta(lo[a], s[a], a), far_face = domain_.delta(lo[a] + edge[a], s[a], a);
+      if (domain_.periodic && !(std::abs(near_face - far_face - edge[a]) < 0.5 * edge[a])) return false;
       far2 += std::max(near_face * near_face, far_face * far_face);
     }
     return far2 < cover2_;
@@ -430,17 +466,23 @@ class EbeidaSampler {
         edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * level_scale_;
       }
       near.clear();
-      // Away from a torus seam the plain difference is the wrapped one.
-      bool seam = false;
-      for (int a = 0; a < D; ++a) seam = seam || c[a] < reach_[a] || c[a] + reach_[a] >= n_[a];
-      any_neighbour(cover, c, o.cell, [&](std::size_t n) {
+      // Each neighbour offset is one periodic image of the neighbour's sample:
+      // the image that lies in the cell at that offset, whole periods away
+      // from the stored sample. A torus shorter than 2r along an axis puts
+      // several images of one sample within r of a cell, and a sub-cell may
+      // be covered by any one of them (the minimum-image distance of the
+      // darts sees them all); the image nearest the cell's corner alone
+      // would leave such sub-cells open for ever.
+      for_each_image(cover, c, o.cell, [&](std::size_t n, const std::array<int, D>& periods) {
         if (state_[n] >= 0) {
           const Point<D>& s = samples_[static_cast<std::size_t>(state_[n])];
           std::array<double, D> d;
-          for (int a = 0; a < D; ++a) d[a] = seam ? domain_.delta(cell_lo[a], s[a], a) : s[a] - cell_lo[a];
+          for (int a = 0; a < D; ++a) {
+            d[a] = s[a] - cell_lo[a];
+            if (periods[a] != 0) d[a] += periods[a] * domain_.extent(a);
+          }
           near.push_back(d);
         }
-        return false;
       });
       const auto begin = static_cast<std::uint32_t>(subs.size());
       const Subs parent_subs = parent_level == 0 ? Subs{0, 1} : subs_of_[slot];
@@ -491,6 +533,13 @@ class EbeidaSampler {
       open.push_back(Open{o.cell, 0, start + waiting_time(key, o.cell, 0, count)});
       subs_of.push_back(Subs{begin, count});
     }
+    // Open sub-cells peak at about 1.6 per grid cell (3D, level 2; 0.8 in
+    // 2D): a level that leaves far more would keep growing 2^D-fold with each
+    // further one, so memory is capped here rather than by the level bound.
+    if (subs.size() > kMaxSubsPerCell * state_.size() + 4096)
+      throw Failure("ebeida: " + std::to_string(subs.size()) + " sub-cells still open at refinement level " +
+                    std::to_string(level_) + ", more than " + std::to_string(kMaxSubsPerCell) +
+                    " per grid cell (numerical breakdown)");
     open_ = std::move(open);
     subs_ = std::move(subs);
     subs_of_ = std::move(subs_of);

@@ -77,6 +77,24 @@ TEST(Ebeida, MatchesMaximalDartThrowing) {
   EXPECT_LT(testing_stats::max_spectrum_t(e.spectrum, j.spectrum, 47), testing_stats::kMaxSpectrumT);
 }
 
+// Tori with a period under 2r (several images of one sample within r of a
+// cell) or near 2.33r in 3D (a cell holding the point half a period from a
+// sample): each of these once refined for ever, memory growing without end.
+TEST(Ebeida, ShortPeriodsFinishMaximal) {
+  const auto torus2 = [](double x, double y) { return Domain<2>::torus({{0.0, 0.0}}, {{x, y}}); };
+  const auto torus3 = [](double x, double y, double z) { return Domain<3>::torus({{0.0, 0.0, 0.0}}, {{x, y, z}}); };
+  for (const auto& [r, domain] : {std::pair{0.5, torus2(0.9, 100)}, std::pair{0.5, torus2(0.6, 100)},
+                                  std::pair{33.2, torus2(2.68, 22806)}, std::pair{0.5, torus2(0.15, 30)}}) {
+    const auto points = ebeida<2>({r}, domain, 1);
+    EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, r));
+  }
+  for (const auto& [r, domain] : {std::pair{0.01, torus3(1, 0.005, 1)}, std::pair{0.5, torus3(4, 4, 1.165)},
+                                  std::pair{0.5, torus3(4, 4, 2)}, std::pair{0.5, torus3(0.4, 0.7, 5)}}) {
+    const auto points = ebeida<3>({r}, domain, 1);
+    EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, r));
+  }
+}
+
 TEST(Ebeida, RejectsBadInput) {
   const auto domain = Domain<2>::unit();
   EXPECT_THROW(ebeida<2>({0.0}, domain, 1), InvalidArgument);
