@@ -2,13 +2,13 @@
 // textbook direct DFT (one cos/sin pair per point and frequency, one thread),
 // the pair correlation function and the L2-star discrepancy.
 #include <benchmark/benchmark.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "pds/analysis/discrepancy.h"
 #include "pds/analysis/pair_correlation.h"
+#include "pds/parallel.h"
 #include "pds/analysis/spectrum.h"
 #include "pds/samplers/random.h"
 
@@ -23,7 +23,7 @@ std::vector<pds::PointSet<2>> sets_of(std::size_t m, std::uint64_t n) {
 /// The target: 10 sets of 4096 points at 257 x 257 frequencies (K = 128).
 /// Argument: threads.
 void BM_Periodogram_10x4096_K128(benchmark::State& state) {
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(state.range(0)));
+  pds::ThreadLimit limit(static_cast<int>(state.range(0)));
   const auto sets = sets_of(10, 4096);
   for (auto _ : state)
     benchmark::DoNotOptimize(pds::periodogram<2>(sets, pds::Domain<2>::unit(true), {.max_frequency = 128}));

@@ -39,4 +39,8 @@ std::string methods_help();
 /// sync with the registry).
 std::string methods_markdown();
 
+/// The README's table of methods by family, between its `methods-table`
+/// markers (a test keeps the README in sync with the registry).
+std::string methods_readme_table();
+
 }  // namespace pds::cli

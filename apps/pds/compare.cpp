@@ -1,4 +1,4 @@
-// pds compare [METHOD ...] -o SHEET: the slides' comparison of patterns, one
+// pds compare [METHOD ...] -o SHEET: the comparison of patterns of Lagae & Dutre (2008), one
 // row per method with the spatial view (one set) beside the Fourier view (the
 // periodogram and radial power averaged over --sets realisations), all on the
 // unit torus so that the spectrum has no boundary artefacts.
@@ -25,15 +25,12 @@ struct CompareOptions {
   std::string output;
 };
 
-/// The default rows: those of these methods that the registry holds, in this
-/// order (white noise, stratified, then the Poisson disk family).
+/// The default rows: the methods the registry marks for comparison, in its
+/// order (white noise, stratified, then the Poisson disk families).
 std::vector<std::string> default_methods() {
-  const char* preferred[] = {"random",         "jittered",         "dart-throwing", "bridson",
-                             "best-candidate", "dunbar-humphreys", "wei",           "jones"};
   std::vector<std::string> out;
-  for (const char* name : preferred)
-    for (const Method& m : methods())
-      if (m.name == name) out.push_back(name);
+  for (const Method& m : methods())
+    if (m.compare) out.push_back(m.name);
   return out;
 }
 
@@ -43,9 +40,9 @@ void add_compare(CLI::App& app) {
   auto opt = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand(
       "compare", "Draw one sheet comparing methods: points beside their spectrum (spatial and Fourier views)");
-  cmd->add_option("methods", opt->methods,
-                  "Methods to compare (default: those of random, jittered, dart-throwing, bridson, best-candidate, "
-                  "dunbar-humphreys, wei, jones that are registered)");
+  std::string defaults;
+  for (const std::string& name : default_methods()) defaults += (defaults.empty() ? "" : ", ") + name;
+  cmd->add_option("methods", opt->methods, "Methods to compare (default: " + defaults + ")");
   cmd->add_option("--count,-n", opt->count, "Points per set")->capture_default_str();
   cmd->add_option("--sets,-M", opt->sets, "Realisations averaged in the spectrum (seeds SEED, SEED+1, ...)")
       ->capture_default_str();

@@ -1,14 +1,20 @@
 #pragma once
-// The single table of sampling methods. It feeds the command line
-// (`pds generate METHOD`, `pds --help`), the conformance tests and the docs
-// index, so a method is added in exactly one place: one line in
-// src/pds/registry.cpp naming its Method.
+// The single table of sampling methods, a layer above the samplers: the
+// samplers are typed free functions that know nothing of it, and each entry
+// (src/pds/registry/<family>.cpp) wires a run-time GenerateRequest to one of
+// them. The table feeds the command line (`pds generate METHOD`, `pds
+// --help`, `pds compare`'s default rows), docs/methods.md and the README's
+// method table (both generated, and kept in sync by tests), and the
+// conformance tests (every method that promises a minimum distance gets the
+// all-pairs oracle, every one with a rho band the relative-radius check), so
+// a method is added in one place: its entry and one line in the table.
 
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "pds/domain.h"
@@ -47,15 +53,38 @@ struct GenerateRequest {
   double param(const std::string& name, double fallback) const;
 };
 
+/// The groups the README and docs list methods in.
+enum class Family { white_noise, stratified, sequence, poisson_disk, fast_poisson_disk, maximal_poisson_disk };
+std::string_view family_name(Family family);
+
+/// The relative radius (Lagae & Dutre 2008; analysis/relative_radius.h) a
+/// method's sets reach at `radius` on the conformance domains (a 1.25 x 1
+/// box or torus in 2D, 1 x 1.5 x 0.8 in 3D; tests/poisson_disk_conformance_test.cpp):
+/// measured over seeds 1-5 and widened by the spread the set size gives. A
+/// box packs more points along its faces, so its band sits higher.
+struct RhoBand {
+  int dim = 2;
+  bool torus = false;
+  double radius = 0;
+  double lo = 0, hi = 0;
+};
+
 struct Method {
   std::string name;
+  Family family = Family::white_noise;
+  std::string docs;      // the page that explains it, relative to the repository root
   std::string summary;   // one line for --help
   std::string citation;  // the paper, or "" for elementary patterns
   bool takes_count = false;
   bool takes_radius = false;
-  bool maximal = false;        // promises that no point of the domain is farther than radius from a sample
+  bool min_distance = false;   // with --radius, every pair of samples is at least that far apart
+  bool maximal = false;        // with --radius, no point of the domain is farther than radius from a sample
+  bool exact_count = false;    // with --count N, exactly N points (or InvalidArgument)
+  bool progressive = false;    // every prefix of the output is itself a well-spread set
   bool deterministic = false;  // ignores the seed
+  bool compare = false;        // one of `pds compare`'s default rows
   std::vector<int> dims{2, 3};
+  std::vector<RhoBand> rho;  // expected relative radius, where measured
   std::vector<MethodParam> params;
   /// Runs the method on a request that generate() has already validated.
   PointCloud (*run)(const GenerateRequest&) = nullptr;

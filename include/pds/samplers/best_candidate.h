@@ -11,7 +11,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -63,7 +62,5 @@ template <int D>
 PointSet<D> best_candidate(const BestCandidateParams& params, const Domain<D>& domain, std::uint64_t seed) {
   return best_candidate_run(params, domain, seed).points;
 }
-
-const Method& best_candidate_method();
 
 }  // namespace pds

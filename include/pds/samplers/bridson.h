@@ -9,7 +9,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -39,7 +38,5 @@ struct BridsonParams {
 /// of 0 or one that does not fit, more than kMaxGridCells background cells.
 template <int D>
 PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::uint64_t seed);
-
-const Method& bridson_method();
 
 }  // namespace pds

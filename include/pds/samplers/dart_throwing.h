@@ -9,7 +9,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -51,7 +50,5 @@ PointSet<D> dart_throwing(const DartThrowingParams& params, const Domain<D>& dom
 /// The failure bound used when params.max_failures is 0.
 template <int D>
 std::uint64_t default_dart_failures(const Domain<D>& domain, double radius);
-
-const Method& dart_throwing_method();
 
 }  // namespace pds

@@ -9,7 +9,6 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -53,8 +52,6 @@ struct DunbarHumphreysParams {
 /// packing exceeds max_points, on a torus a period of 4 radius or less (6 for
 /// variants 1 and 2), a variant other than 0, 1 or 2.
 PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2>& domain, std::uint64_t seed);
-
-const Method& dunbar_humphreys_method();
 
 namespace detail {
 /// Whether this build and processor have boundary sampling's AVX-512

@@ -6,7 +6,6 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -37,7 +36,5 @@ struct EbeidaParams {
 /// numerical breakdown; not seen in testing).
 template <int D>
 PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uint64_t seed);
-
-const Method& ebeida_method();
 
 }  // namespace pds

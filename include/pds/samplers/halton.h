@@ -6,7 +6,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 #include "pds/samplers/low_discrepancy.h"
 
 namespace pds {
@@ -27,7 +26,5 @@ struct HaltonParams {
 /// Invalid: first + count above 2^32.
 template <int D>
 PointSet<D> halton(const HaltonParams& params, const Domain<D>& domain, std::uint64_t seed);
-
-const Method& halton_method();
 
 }  // namespace pds

@@ -7,7 +7,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 #include "pds/samplers/low_discrepancy.h"
 
 namespace pds {
@@ -29,7 +28,5 @@ struct HammersleyParams {
 /// Invalid: first + count above size, or above 2^32.
 template <int D>
 PointSet<D> hammersley(const HammersleyParams& params, const Domain<D>& domain, std::uint64_t seed);
-
-const Method& hammersley_method();
 
 }  // namespace pds

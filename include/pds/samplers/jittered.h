@@ -7,7 +7,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -22,7 +21,5 @@ struct JitteredParams {
 /// Invalid: a stratum count below 1.
 template <int D>
 PointSet<D> jittered(const JitteredParams& params, const Domain<D>& domain, std::uint64_t seed);
-
-const Method& jittered_method();
 
 }  // namespace pds

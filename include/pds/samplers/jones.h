@@ -6,7 +6,6 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -34,7 +33,5 @@ struct JonesParams {
 /// Failure: 10^4 darts in a row missing one cell's free area (a numerical
 /// breakdown of the cell geometry; not seen in testing).
 PointSet<2> jones(const JonesParams& params, const Domain<2>& domain, std::uint64_t seed);
-
-const Method& jones_method();
 
 }  // namespace pds

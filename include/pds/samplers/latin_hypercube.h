@@ -8,7 +8,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 #include "pds/rng.h"
 
 namespace pds {
@@ -47,7 +46,5 @@ class SlabJitter {
 
 /// A uniformly random permutation of 0 ... n-1 (Fisher-Yates with Rng::below).
 std::vector<std::uint32_t> random_permutation(std::uint32_t n, Rng& rng);
-
-const Method& latin_hypercube_method();
 
 }  // namespace pds

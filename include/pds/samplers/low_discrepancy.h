@@ -21,7 +21,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 #include "pds/rng.h"
 
 namespace pds {
@@ -44,9 +43,6 @@ void require_index_range(const std::string& method, std::uint64_t first, std::ui
 /// Throws InvalidArgument unless `value` names a Scramble.
 Scramble scramble_from(const std::string& method, int value);
 
-/// The `scramble` and `first` parameters every sequence takes in the registry.
-MethodParam scramble_param();
-MethodParam first_param();
 
 /// The bases of the Halton sequence, one per axis.
 inline constexpr std::array<unsigned, 8> kPrimes{2, 3, 5, 7, 11, 13, 17, 19};

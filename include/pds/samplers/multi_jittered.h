@@ -7,7 +7,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -24,7 +23,5 @@ struct MultiJitteredParams {
 /// Invalid: a stratum count below 1, or N above 2^32.
 template <int D>
 PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& domain, std::uint64_t seed);
-
-const Method& multi_jittered_method();
 
 }  // namespace pds

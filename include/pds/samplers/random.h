@@ -5,7 +5,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 #include "pds/rng.h"
 
 namespace pds {
@@ -28,7 +27,5 @@ Point<D> uniform_point(Rng& rng, const Domain<D>& domain) {
   for (int i = 0; i < D; ++i) p[i] = rng.uniform(domain.lo[i], domain.hi[i]);
   return p;
 }
-
-const Method& white_noise_method();
 
 }  // namespace pds

@@ -6,7 +6,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -21,7 +20,5 @@ struct RegularParams {
 /// Invalid: a cell count below 1.
 template <int D>
 PointSet<D> regular(const RegularParams& params, const Domain<D>& domain);
-
-const Method& regular_method();
 
 }  // namespace pds

@@ -7,7 +7,6 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 #include "pds/samplers/low_discrepancy.h"
 
 namespace pds {
@@ -39,7 +38,5 @@ PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint6
 /// The 32 direction numbers of one axis (0-based, axis < kSobolMaxDim): bit k
 /// of an index's Gray code contributes direction[k] to the coordinate * 2^32.
 std::array<std::uint32_t, 32> sobol_directions(int axis);
-
-const Method& sobol_method();
 
 }  // namespace pds

@@ -6,7 +6,6 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
-#include "pds/registry.h"
 
 namespace pds {
 
@@ -36,6 +35,10 @@ struct WeiParams {
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
 };
 
+/// The largest `levels` and `windows` wei accepts.
+inline constexpr int kWeiMaxLevels = 10;
+inline constexpr int kWeiMaxWindows = 1000;
+
 /// L.-Y. Wei, "Parallel Poisson disk sampling", ACM SIGGRAPH 2008 (TOG 27(3)).
 ///
 /// A grid of cells of edge <= radius/sqrt(D) (one sample per cell at most) is
@@ -56,7 +59,5 @@ struct WeiParams {
 /// levels outside [1, 10], windows outside [1, 1000], threads < 0.
 template <int D>
 PointSet<D> wei(const WeiParams& params, const Domain<D>& domain, std::uint64_t seed);
-
-const Method& wei_method();
 
 }  // namespace pds

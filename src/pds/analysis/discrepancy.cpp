@@ -3,8 +3,6 @@
 
 #include "pds/analysis/discrepancy.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +11,7 @@
 #include <vector>
 
 #include "pds/error.h"
+#include "pds/parallel.h"
 
 namespace pds {
 namespace {
@@ -47,8 +46,8 @@ double l2_star_discrepancy(const PointSet<D>& points, const Domain<D>& domain) {
   const std::size_t n = u.size();
   // rows[i] = prod(1 - u_i^2) term and sum_j prod(1 - max) for row i.
   std::vector<double> single(n), pair(n);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& range) {
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+  parallel_for(0, n, 64, 0, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i != last; ++i) {
       double s = 1.0;
       for (int a = 0; a < D; ++a) s *= 1.0 - u[i][a] * u[i][a];
       single[i] = s;

@@ -18,8 +18,6 @@
 
 #include "pds/analysis/spectrum.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +25,7 @@
 #include <string>
 
 #include "pds/error.h"
+#include "pds/parallel.h"
 
 // Function multi-versioning needs GCC or Clang on an ELF x86-64 target (ifunc).
 #if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
@@ -207,8 +206,8 @@ Periodogram periodogram(std::span<const PointSet<D>> sets, const Domain<D>& doma
   // add_chunk, the last axis being k_last = r / (side^(D-2)) >= 0.
   std::vector<double> half(rows * side, 0.0);
   const std::size_t chunks = (rows + kRowsPerChunk - 1) / kRowsPerChunk;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1), [&](const tbb::blocked_range<std::size_t>& range) {
-    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+  parallel_for(0, chunks, 1, 0, [&](std::size_t first, std::size_t last) {
+    for (std::size_t c = first; c != last; ++c) {
       const std::size_t begin = c * kRowsPerChunk, end = std::min(rows, begin + kRowsPerChunk);
       add_chunk<D>(sets, domain, K, begin, end, half.data() + begin * side);
     }

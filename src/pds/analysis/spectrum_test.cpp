@@ -1,7 +1,6 @@
 #include "pds/analysis/spectrum.h"
 
 #include <gtest/gtest.h>
-#include <tbb/global_control.h>
 
 #include <cmath>
 #include <complex>
@@ -9,6 +8,7 @@
 
 #include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
+#include "pds/parallel.h"
 #include "pds/registry.h"
 #include "pds/samplers/jittered.h"
 #include "pds/samplers/random.h"
@@ -192,11 +192,11 @@ TEST(Periodogram, SameBytesForAnyThreadCount) {
   const auto sets = white_noise_sets(3, 300);
   Periodogram one, many;
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    ThreadLimit limit(1);
     one = periodogram<2>(sets, Domain<2>::unit(true), {.max_frequency = 30});
   }
   {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 4);
+    ThreadLimit limit(4);
     many = periodogram<2>(sets, Domain<2>::unit(true), {.max_frequency = 30});
   }
   EXPECT_EQ(one.power, many.power);

@@ -8,9 +8,6 @@
 #include "pds/render/render.h"
 
 #include <fftw3.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <atomic>
@@ -21,6 +18,7 @@
 #include <string>
 
 #include "pds/error.h"
+#include "pds/parallel.h"
 
 namespace pds {
 
@@ -112,12 +110,10 @@ Image render(const Scene& scene, const ImageSampler& sampler, int width, int hei
     empty += local_empty;
   };
 
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, bx_count * by_count), [&](const tbb::blocked_range<int>& range) {
-      for (int b = range.begin(); b != range.end(); ++b) render_block(b);
-    });
-  });
+  parallel_for(0, static_cast<std::size_t>(bx_count * by_count), 1, options.threads,
+               [&](std::size_t first, std::size_t last) {
+                 for (std::size_t b = first; b != last; ++b) render_block(static_cast<int>(b));
+               });
   if (stats) {
     stats->samples = samples.load();
     stats->empty_pixels = empty.load();

@@ -799,26 +799,4 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
 template BestCandidateResult<2> best_candidate_run<2>(const BestCandidateParams&, const Domain<2>&, std::uint64_t);
 template BestCandidateResult<3> best_candidate_run<3>(const BestCandidateParams&, const Domain<3>&, std::uint64_t);
 
-const Method& best_candidate_method() {
-  static const Method method{
-      .name = "best-candidate",
-      .summary = "Mitchell's best-candidate: each sample the farthest of m*i random candidates; progressive",
-      .citation = "D. P. Mitchell, Spectrally optimal sampling for distribution ray tracing, SIGGRAPH 1991",
-      .takes_count = true,
-      .takes_radius = true,
-      .params = {{"m", kBestCandidateDefaultM, 1, 1000, true, "candidates per sample already placed"}},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              BestCandidateParams params;
-              params.count = r.count;
-              params.radius = r.radius;
-              params.m = static_cast<int>(r.param("m", kBestCandidateDefaultM));
-              return best_candidate(params, domain, r.seed);
-            });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

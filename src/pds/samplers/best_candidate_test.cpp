@@ -13,6 +13,7 @@
 #include "pds/grid.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
+#include "pds/registry.h"
 
 namespace pds {
 namespace {

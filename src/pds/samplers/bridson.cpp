@@ -448,41 +448,4 @@ PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::u
 template PointSet<2> bridson<2>(const BridsonParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> bridson<3>(const BridsonParams&, const Domain<3>&, std::uint64_t);
 
-const Method& bridson_method() {
-  static const Method method{
-      .name = "bridson",
-      .summary = "Bridson's fast Poisson disk sampling: k candidates in the annulus [r, 2r] around active samples",
-      .citation = "R. Bridson, Fast Poisson disk sampling in arbitrary dimensions, SIGGRAPH 2007 sketches",
-      .takes_count = true,
-      .takes_radius = true,
-      .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
-                 {"rho", kBridsonCountRho, 0.01, 1, false,
-                  "relative radius that sets the radius for --count without --radius"}},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              BridsonParams params;
-              params.k = static_cast<int>(r.param("k", 30));
-              params.count = r.count;
-              if (r.radius) {
-                params.radius = *r.radius;
-                return bridson(params, domain, r.seed);
-              }
-              // --count alone: the radius of relative radius rho; in the rare
-              // case that fewer fit (tiny counts), retry at a smaller radius.
-              params.radius = radius_for_count(*r.count, domain, r.param("rho", kBridsonCountRho));
-              for (int attempt = 0;; ++attempt) {
-                try {
-                  return bridson(params, domain, r.seed);
-                } catch (const InvalidArgument&) {
-                  if (attempt == 20) throw;
-                  params.radius *= 0.95;
-                }
-              }
-            });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

@@ -124,33 +124,4 @@ template PointSet<3> dart_throwing<3>(const DartThrowingParams&, const Domain<3>
 template std::uint64_t default_dart_failures<2>(const Domain<2>&, double);
 template std::uint64_t default_dart_failures<3>(const Domain<3>&, double);
 
-const Method& dart_throwing_method() {
-  static const Method method{
-      .name = "dart-throwing",
-      .summary =
-          "Poisson disk by dart throwing (the slides' loop), grid-accelerated; --radius R runs until darts "
-          "keep missing, --count N stops at N",
-      .citation = "R. L. Cook, Stochastic sampling in computer graphics, ACM TOG 5(1), 1986",
-      .takes_count = true,
-      .takes_radius = true,
-      .params = {{"all-pairs", 0, 0, 1, true, "1: the literal check against every sample (same output, O(N) a dart)"},
-                 {"failures", 0, 0, 1e15, true,
-                  "consecutive rejected darts that end the loop; 0: max(10^4, packing bound at the radius)"},
-                 {"rho", kDartCountRho, 0.01, 1, false,
-                  "relative radius that sets the radius for --count without --radius"}},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              DartThrowingParams params;
-              params.count = r.count;
-              params.radius = r.radius ? *r.radius : radius_for_count(*r.count, domain, r.param("rho", kDartCountRho));
-              params.all_pairs = r.param("all-pairs", 0) != 0;
-              params.max_failures = static_cast<std::uint64_t>(r.param("failures", 0));
-              return dart_throwing(params, domain, r.seed);
-            });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

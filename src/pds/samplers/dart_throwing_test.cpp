@@ -6,6 +6,7 @@
 #include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
 #include "pds/samplers/sizing.h"
+#include "pds/registry.h"
 
 namespace pds {
 namespace {

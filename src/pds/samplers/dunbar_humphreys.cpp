@@ -1155,27 +1155,4 @@ PointSet<2> dunbar_humphreys(const DunbarHumphreysParams& params, const Domain<2
   return detail::dunbar_humphreys_boundary(params, domain, seed, detail::dunbar_humphreys_has_vector_kernel());
 }
 
-const Method& dunbar_humphreys_method() {
-  static const Method method{
-      .name = "dunbar-humphreys",
-      .summary = "boundary sampling or scalloped sectors (Dunbar & Humphreys): maximal Poisson disk sets, 2D",
-      .citation =
-          "D. Dunbar, G. Humphreys, A spatial data structure for fast Poisson-disk sample generation, "
-          "ACM SIGGRAPH 2006",
-      .takes_radius = true,
-      .maximal = true,
-      .dims = {2},
-      .params = {{"variant", 0, 0, 2, true,
-                  "0: boundary sampling (fastest; 25% denser than dart throwing), 1: scalloped sectors, one annulus "
-                  "at a time as in the paper (5% denser), 2: scalloped sectors, uniform over all free annuli "
-                  "(dart-throwing statistics)"}},
-      .run =
-          [](const GenerateRequest& r) {
-            const DunbarHumphreysParams params{*r.radius, r.max_points, static_cast<int>(r.param("variant", 0))};
-            return PointCloud::from<2>(dunbar_humphreys(params, r.domain<2>(), r.seed));
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

@@ -576,22 +576,4 @@ PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uin
 template PointSet<2> ebeida<2>(const EbeidaParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> ebeida<3>(const EbeidaParams&, const Domain<3>&, std::uint64_t);
 
-const Method& ebeida_method() {
-  static const Method method{
-      .name = "ebeida",
-      .summary = "maximal Poisson disk, fast (Ebeida et al. flat quadtree, darts swept in time order), --radius",
-      .citation =
-          "M. S. Ebeida, S. A. Mitchell, A. Patney, A. A. Davidson, J. D. Owens, A simple algorithm for maximal "
-          "Poisson-disk sampling in high dimensions, Computer Graphics Forum 31(2), 2012",
-      .takes_radius = true,
-      .maximal = true,
-      .run =
-          [](const GenerateRequest& r) {
-            const EbeidaParams params{*r.radius, r.max_points};
-            return run_typed(r, [&](const auto& domain) { return ebeida(params, domain, r.seed); });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

@@ -39,27 +39,4 @@ PointSet<D> halton(const HaltonParams& params, const Domain<D>& domain, std::uin
 template PointSet<2> halton<2>(const HaltonParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> halton<3>(const HaltonParams&, const Domain<3>&, std::uint64_t);
 
-const Method& halton_method() {
-  static const Method method{
-      .name = "halton",
-      .summary = "Halton sequence (radical inverses in bases 2, 3, 5), optionally scrambled",
-      .citation =
-          "J. H. Halton, On the efficiency of certain quasi-random sequences of points in evaluating "
-          "multi-dimensional integrals, Numerische Mathematik 2, 1960",
-      .takes_count = true,
-      .deterministic = true,
-      .params = {scramble_param(), first_param()},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const HaltonParams params{.count = *r.count,
-                                        .first = static_cast<std::uint64_t>(r.param("first", 0)),
-                                        .scramble = scramble_from("halton", static_cast<int>(r.param("scramble", 0)))};
-              return halton(params, domain, r.seed);
-            });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

@@ -38,36 +38,4 @@ PointSet<D> hammersley(const HammersleyParams& params, const Domain<D>& domain, 
 template PointSet<2> hammersley<2>(const HammersleyParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> hammersley<3>(const HammersleyParams&, const Domain<3>&, std::uint64_t);
 
-const Method& hammersley_method() {
-  static const Method method{
-      .name = "hammersley",
-      .summary = "Hammersley set (i/N, radical inverses in bases 2, 3), optionally scrambled",
-      .citation =
-          "J. M. Hammersley, Monte Carlo methods for solving multivariable problems, Annals of the New York "
-          "Academy of Sciences 86, 1960",
-      .takes_count = true,
-      .deterministic = true,
-      .params = {scramble_param(),
-                 first_param(),
-                 {.name = "size",
-                  .default_value = 0,
-                  .min = 0,
-                  .max = static_cast<double>(kSequenceIndexLimit),
-                  .integer = true,
-                  .help = "N, the size of the whole set when --count asks for a part of it (0: first + count)"}},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const HammersleyParams params{
-                  .count = *r.count,
-                  .first = static_cast<std::uint64_t>(r.param("first", 0)),
-                  .size = static_cast<std::uint64_t>(r.param("size", 0)),
-                  .scramble = scramble_from("hammersley", static_cast<int>(r.param("scramble", 0)))};
-              return hammersley(params, domain, r.seed);
-            });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

@@ -36,23 +36,4 @@ PointSet<D> jittered(const JitteredParams& params, const Domain<D>& domain, std:
 template PointSet<2> jittered<2>(const JitteredParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> jittered<3>(const JitteredParams&, const Domain<3>&, std::uint64_t);
 
-const Method& jittered_method() {
-  static const Method method{
-      .name = "jittered",
-      .summary = "uniform jitter: one uniform point in each cell of a grid of --count near-cubic strata",
-      .citation = "R. L. Cook, Stochastic sampling in computer graphics, ACM TOG 5(1), 1986",
-      .takes_count = true,
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const auto cells = strata_for_count(domain, *r.count);
-              JitteredParams params;
-              std::copy(cells.begin(), cells.end(), params.cells.begin());
-              return jittered(params, domain, r.seed);
-            });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

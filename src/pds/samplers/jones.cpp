@@ -473,23 +473,4 @@ PointSet<2> jones(const JonesParams& params, const Domain<2>& domain, std::uint6
   return JonesSampler<PlaneCells>(params, domain, seed).run();
 }
 
-const Method& jones_method() {
-  static const Method method{
-      .name = "jones",
-      .summary = "Voronoi-based maximal dart throwing (Jones): cell chosen by free area, 2D, --radius",
-      .citation =
-          "T. R. Jones, Efficient generation of Poisson-disk sampling patterns, journal of graphics tools "
-          "11(2), 2006",
-      .takes_radius = true,
-      .maximal = true,
-      .dims = {2},
-      .run =
-          [](const GenerateRequest& r) {
-            const JonesParams params{*r.radius, r.max_points};
-            return PointCloud::from<2>(jones(params, r.domain<2>(), r.seed));
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

@@ -57,18 +57,4 @@ PointSet<D> latin_hypercube(const LatinHypercubeParams& params, const Domain<D>&
 template PointSet<2> latin_hypercube<2>(const LatinHypercubeParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> latin_hypercube<3>(const LatinHypercubeParams&, const Domain<3>&, std::uint64_t);
 
-const Method& latin_hypercube_method() {
-  static const Method method{
-      .name = "latin-hypercube",
-      .summary = "Latin hypercube (N-rooks): one point in every slab of every axis, random across axes",
-      .citation = "M. D. McKay, R. J. Beckman and W. J. Conover, Technometrics 21(2), 1979",
-      .takes_count = true,
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) { return latin_hypercube({*r.count}, domain, r.seed); });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

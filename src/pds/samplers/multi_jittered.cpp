@@ -80,32 +80,4 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
 template PointSet<2> multi_jittered<2>(const MultiJitteredParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> multi_jittered<3>(const MultiJitteredParams&, const Domain<3>&, std::uint64_t);
 
-const Method& multi_jittered_method() {
-  static const Method method{
-      .name = "multi-jittered",
-      .summary = "(correlated) multi-jittered: one point per stratum of a near-cubic grid and per N-rooks slab",
-      .citation =
-          "K. Chiu, P. Shirley and C. Wang, Multi-jittered sampling, Graphics Gems IV, 1994; A. Kensler, "
-          "Correlated multi-jittered sampling, Pixar Technical Memo 13-01, 2013",
-      .takes_count = true,
-      .params = {{.name = "correlated",
-                  .default_value = 1,
-                  .min = 0,
-                  .max = 1,
-                  .integer = true,
-                  .help = "1: Kensler's correlated shuffle (one per axis); 0: Chiu et al.'s (one per column)"}},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const auto cells = strata_for_count(domain, *r.count);
-              MultiJitteredParams params;
-              std::copy(cells.begin(), cells.end(), params.cells.begin());
-              params.correlated = r.param("correlated", 1) != 0;
-              return multi_jittered(params, domain, r.seed);
-            });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

@@ -13,17 +13,4 @@ PointSet<D> white_noise(const WhiteNoiseParams& params, const Domain<D>& domain,
 template PointSet<2> white_noise<2>(const WhiteNoiseParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> white_noise<3>(const WhiteNoiseParams&, const Domain<3>&, std::uint64_t);
 
-const Method& white_noise_method() {
-  static const Method method{
-      .name = "random",
-      .summary = "uniform white noise (the slides' Poisson pattern): independent uniform points",
-      .takes_count = true,
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) { return white_noise({*r.count}, domain, r.seed); });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

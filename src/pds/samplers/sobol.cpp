@@ -144,27 +144,4 @@ PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint6
 template PointSet<2> sobol<2>(const SobolParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> sobol<3>(const SobolParams&, const Domain<3>&, std::uint64_t);
 
-const Method& sobol_method() {
-  static const Method method{
-      .name = "sobol",
-      .summary = "Sobol sequence (Joe-Kuo direction numbers, Gray-code order), optionally Owen-scrambled",
-      .citation =
-          "I. M. Sobol, On the distribution of points in a cube and the approximate evaluation of integrals, "
-          "USSR Comput. Math. Math. Phys. 7(4), 1967; S. Joe and F. Y. Kuo, SIAM J. Sci. Comput. 30(5), 2008",
-      .takes_count = true,
-      .deterministic = true,
-      .params = {scramble_param(), first_param()},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const SobolParams params{.count = *r.count,
-                                       .first = static_cast<std::uint64_t>(r.param("first", 0)),
-                                       .scramble = scramble_from("sobol", static_cast<int>(r.param("scramble", 0)))};
-              return sobol(params, domain, r.seed);
-            });
-          },
-  };
-  return method;
-}
-
 }  // namespace pds

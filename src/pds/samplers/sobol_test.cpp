@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "pds/error.h"
+#include "pds/registry.h"
 #include "stratification.h"
 
 namespace pds {

@@ -63,9 +63,6 @@
 // the next level: at N = 10^6 in 2D a peak of 2.8 times the output (docs/wei.md).
 #include "pds/samplers/wei.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <bit>
@@ -79,13 +76,14 @@
 #include <vector>
 
 #include "pds/error.h"
+#include "pds/parallel.h"
 #include "pds/rng.h"
 
 namespace pds {
 namespace {
 
-constexpr int kMaxLevels = 10;
-constexpr int kMaxWindows = 1000;
+constexpr int kMaxLevels = kWeiMaxLevels;
+constexpr int kMaxWindows = kWeiMaxWindows;
 // The most level-0 cells a neighbourhood spans along an axis: 2 reach + 1
 // with reach <= floor(2 sqrt(D)) + 1 (cells of edge >= r / (2 sqrt(D)) when
 // an axis has two or more), or the whole axis.
@@ -228,17 +226,13 @@ class WeiSampler {
   }
 
   PointSet<D> run() {
-    const int threads = params_.threads > 0 ? params_.threads : tbb::task_arena::automatic;
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-      for (int level = 0; level < params_.levels; ++level) {
-        if (level > 0) {
-          refine(level);
-          if (active_.empty()) break;
-        }
-        run_level(level);
+    for (int level = 0; level < params_.levels; ++level) {
+      if (level > 0) {
+        refine(level);
+        if (active_.empty()) break;
       }
-    });
+      run_level(level);
+    }
     active_ = {};  // freed before the output is built
     PointSet<D> points;
     std::size_t count = 0;
@@ -472,7 +466,7 @@ class WeiSampler {
     auto over_chunks = [&](auto&& per_dart) {
       for (std::size_t g = 0; g < groups; ++g) {
         const auto [begin, end] = unit_range(level, g);
-        tbb::parallel_for(std::size_t{0}, chunk_first[g + 1] - chunk_first[g], [&](std::size_t c) {
+        parallel_for(0, chunk_first[g + 1] - chunk_first[g], 1, params_.threads, [&](std::size_t c, std::size_t) {
           std::size_t* row = &counts[(chunk_first[g] + c) * windows];
           const std::size_t first = begin + c * kChunk;
           for_each_unit(level, g, first, std::min(first + kChunk, end),
@@ -510,11 +504,11 @@ class WeiSampler {
     const std::size_t begin = bucket_[bucket], end = bucket_[bucket + 1];
     if (begin == end) return;
     // Small chunks: at the finer levels a bucket holds a few hundred darts.
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 64), [&](const auto& range) {
+    parallel_for(begin, end, 64, params_.threads, [&](std::size_t range_begin, std::size_t range_end) {
       std::vector<Point<D>> near;
-      std::size_t i = range.begin();
-      while (i < range.end() && i > begin && events_[i] == events_[i - 1]) ++i;
-      while (i < range.end()) {
+      std::size_t i = range_begin;
+      while (i < range_end && i > begin && events_[i] == events_[i - 1]) ++i;
+      while (i < range_end) {
         const std::uint32_t unit = events_[i];
         std::size_t j = i;
         while (j < end && events_[j] == unit) ++j;
@@ -590,10 +584,10 @@ class WeiSampler {
     constexpr int kChildren = 1 << D;
     std::vector<std::uint8_t> masks(count);
     const int parent_side = 1 << (level - 1);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const auto& range) {
+    parallel_for(0, count, 256, params_.threads, [&](std::size_t range_begin, std::size_t range_end) {
       std::vector<Point<D>> near;
       std::uint32_t gathered = std::numeric_limits<std::uint32_t>::max();
-      for (std::size_t p = range.begin(); p != range.end(); ++p) {
+      for (std::size_t p = range_begin; p != range_end; ++p) {
         const FineCell f = parent_at(p);
         masks[p] = 0;
         if (!std::isnan(grid_[f.parent][0])) continue;  // a sample covers its whole level-0 cell
@@ -683,37 +677,5 @@ PointSet<D> wei(const WeiParams& params, const Domain<D>& domain, std::uint64_t 
 
 template PointSet<2> wei<2>(const WeiParams&, const Domain<2>&, std::uint64_t);
 template PointSet<3> wei<3>(const WeiParams&, const Domain<3>&, std::uint64_t);
-
-const Method& wei_method() {
-  static const Method method{
-      .name = "wei",
-      .summary =
-          "parallel Poisson disk sampling (Wei): phase groups of grid cells in random order, k passes of darts at "
-          "Poisson times in time windows, multi-level",
-      .citation = "L.-Y. Wei, Parallel Poisson disk sampling, ACM SIGGRAPH 2008",
-      .takes_radius = true,
-      .params =
-          {{"k", double(WeiParams{}.trials), 1, 1000, true,
-            "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},
-           {"levels", double(WeiParams{}.levels), 1, kMaxLevels, true,
-            "grid levels (each halves the cells of the last and retries where no single disk covers)"},
-           {"windows", double(WeiParams{}.windows), 1, kMaxWindows, true,
-            "time windows per pass, run in order, groups in a random order in each (1: a pass in one visit, "
-            "whose first group leaves a lattice)"}},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const WeiParams params{*r.radius,
-                                     static_cast<int>(r.param("k", WeiParams{}.trials)),
-                                     static_cast<int>(r.param("levels", WeiParams{}.levels)),
-                                     static_cast<int>(r.param("windows", WeiParams{}.windows)),
-                                     r.threads,
-                                     r.max_points};
-              return wei(params, domain, r.seed);
-            });
-          },
-  };
-  return method;
-}
 
 }  // namespace pds

@@ -4,35 +4,44 @@
 #include <cmath>
 #include <sstream>
 
+#include "descriptors.h"
 #include "pds/detail/format.h"
 #include "pds/error.h"
-#include "pds/samplers/best_candidate.h"
-#include "pds/samplers/bridson.h"
-#include "pds/samplers/dart_throwing.h"
-#include "pds/samplers/dunbar_humphreys.h"
-#include "pds/samplers/ebeida.h"
-#include "pds/samplers/halton.h"
-#include "pds/samplers/hammersley.h"
-#include "pds/samplers/jittered.h"
-#include "pds/samplers/jones.h"
-#include "pds/samplers/latin_hypercube.h"
-#include "pds/samplers/multi_jittered.h"
-#include "pds/samplers/random.h"
-#include "pds/samplers/regular.h"
-#include "pds/samplers/sobol.h"
-#include "pds/samplers/wei.h"
 
 namespace pds {
 
 std::span<const Method> methods() {
-  // The one table of methods: one line each.
+  using namespace registry_detail;
+  // The one table of methods, in the order --help lists them.
   static const std::vector<Method> table = {
       white_noise_method(),   regular_method(), jittered_method(),       halton_method(),
       hammersley_method(),    sobol_method(),   multi_jittered_method(), latin_hypercube_method(),
       dart_throwing_method(), bridson_method(), best_candidate_method(), dunbar_humphreys_method(),
-      wei_method(),           jones_method(),   ebeida_method(),
+      wei_method(),
+#ifdef PDS_WITH_CGAL
+      jones_method(),
+#endif
+      ebeida_method(),
   };
   return table;
+}
+
+std::string_view family_name(Family family) {
+  switch (family) {
+    case Family::white_noise:
+      return "white noise";
+    case Family::stratified:
+      return "grid and stratified";
+    case Family::sequence:
+      return "low-discrepancy sequences";
+    case Family::poisson_disk:
+      return "Poisson disk";
+    case Family::fast_poisson_disk:
+      return "fast Poisson disk";
+    case Family::maximal_poisson_disk:
+      return "maximal Poisson disk";
+  }
+  return "?";
 }
 
 const Method& find_method(const std::string& name) {

@@ -1,0 +1,112 @@
+// Registry entries of the fast and maximal Poisson disk methods that need
+// no third-party library: Dunbar & Humphreys, Wei, Ebeida.
+#include <algorithm>
+
+#include "descriptors.h"
+#include "pds/samplers/dunbar_humphreys.h"
+#include "pds/samplers/ebeida.h"
+#include "pds/samplers/wei.h"
+
+namespace pds::registry_detail {
+
+const Method& dunbar_humphreys_method() {
+  static const Method method{
+      .name = "dunbar-humphreys",
+      .family = Family::fast_poisson_disk,
+      .docs = "docs/dunbar-humphreys.md",
+      .summary = "boundary sampling or scalloped sectors (Dunbar & Humphreys): maximal Poisson disk sets, 2D",
+      .citation =
+          "D. Dunbar, G. Humphreys, A spatial data structure for fast Poisson-disk sample generation, "
+          "ACM SIGGRAPH 2006",
+      .takes_radius = true,
+      .min_distance = true,
+      .maximal = true,
+      .compare = true,
+      .dims = {2},
+      // Measured over seeds 1-5 (variant 0, boundary sampling, denser than dart
+      // throwing): box 0.880-0.885, torus 0.871-0.873.
+      .rho = {{2, false, 0.02, 0.86, 0.90}, {2, true, 0.02, 0.85, 0.89}},
+      .params = {{"variant", 0, 0, 2, true,
+                  "0: boundary sampling (fastest; 25% denser than dart throwing), 1: scalloped sectors, one annulus "
+                  "at a time as in the paper (5% denser), 2: scalloped sectors, uniform over all free annuli "
+                  "(dart-throwing statistics)"}},
+      .run =
+          [](const GenerateRequest& r) {
+            const DunbarHumphreysParams params{*r.radius, r.max_points, static_cast<int>(r.param("variant", 0))};
+            return PointCloud::from<2>(dunbar_humphreys(params, r.domain<2>(), r.seed));
+          },
+  };
+  return method;
+}
+
+const Method& wei_method() {
+  static const Method method{
+      .name = "wei",
+      .family = Family::fast_poisson_disk,
+      .docs = "docs/wei.md",
+      .summary =
+          "parallel Poisson disk sampling (Wei): phase groups of grid cells in random order, k passes of darts at "
+          "Poisson times in time windows, multi-level",
+      .citation = "L.-Y. Wei, Parallel Poisson disk sampling, ACM SIGGRAPH 2008",
+      .takes_radius = true,
+      .min_distance = true,
+      .compare = true,
+      // Measured over seeds 1-5: 2D box 0.784-0.788, torus 0.776-0.780; 3D box
+      // 0.842-0.845, torus 0.803-0.805.
+      .rho = {{2, false, 0.02, 0.76, 0.81},
+              {2, true, 0.02, 0.755, 0.80},
+              {3, false, 0.08, 0.82, 0.87},
+              {3, true, 0.08, 0.78, 0.83}},
+      .params =
+          {{"k", double(WeiParams{}.trials), 1, 1000, true,
+            "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},
+           {"levels", double(WeiParams{}.levels), 1, kWeiMaxLevels, true,
+            "grid levels (each halves the cells of the last and retries where no single disk covers)"},
+           {"windows", double(WeiParams{}.windows), 1, kWeiMaxWindows, true,
+            "time windows per pass, run in order, groups in a random order in each (1: a pass in one visit, "
+            "whose first group leaves a lattice)"}},
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              const WeiParams params{*r.radius,
+                                     static_cast<int>(r.param("k", WeiParams{}.trials)),
+                                     static_cast<int>(r.param("levels", WeiParams{}.levels)),
+                                     static_cast<int>(r.param("windows", WeiParams{}.windows)),
+                                     r.threads,
+                                     r.max_points};
+              return wei(params, domain, r.seed);
+            });
+          },
+  };
+  return method;
+}
+
+const Method& ebeida_method() {
+  static const Method method{
+      .name = "ebeida",
+      .family = Family::maximal_poisson_disk,
+      .docs = "docs/ebeida.md",
+      .summary = "maximal Poisson disk, fast (Ebeida et al. flat quadtree, darts swept in time order), --radius",
+      .citation =
+          "M. S. Ebeida, S. A. Mitchell, A. Patney, A. A. Davidson, J. D. Owens, A simple algorithm for maximal "
+          "Poisson-disk sampling in high dimensions, Computer Graphics Forum 31(2), 2012",
+      .takes_radius = true,
+      .min_distance = true,
+      .maximal = true,
+      .compare = true,
+      // Measured over seeds 1-5: 2D box 0.784-0.788, torus 0.774-0.778; 3D box
+      // 0.842-0.845, torus 0.803-0.805 (maximal dart throwing).
+      .rho = {{2, false, 0.02, 0.76, 0.81},
+              {2, true, 0.02, 0.755, 0.80},
+              {3, false, 0.08, 0.82, 0.87},
+              {3, true, 0.08, 0.78, 0.83}},
+      .run =
+          [](const GenerateRequest& r) {
+            const EbeidaParams params{*r.radius, r.max_points};
+            return run_typed(r, [&](const auto& domain) { return ebeida(params, domain, r.seed); });
+          },
+  };
+  return method;
+}
+
+}  // namespace pds::registry_detail

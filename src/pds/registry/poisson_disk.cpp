@@ -1,0 +1,139 @@
+// Registry entries of the classic Poisson disk methods: dart throwing,
+// Bridson, best-candidate; --count without --radius goes through the
+// sizing policy.
+#include <algorithm>
+
+#include "descriptors.h"
+#include "pds/error.h"
+#include "pds/samplers/best_candidate.h"
+#include "pds/samplers/bridson.h"
+#include "pds/samplers/dart_throwing.h"
+#include "pds/samplers/sizing.h"
+
+namespace pds::registry_detail {
+
+const Method& dart_throwing_method() {
+  static const Method method{
+      .name = "dart-throwing",
+      .family = Family::poisson_disk,
+      .docs = "docs/dart-throwing.md",
+      .summary =
+          "Poisson disk by dart throwing (Cook's loop), grid-accelerated; --radius R runs until darts "
+          "keep missing, --count N stops at N",
+      .citation = "R. L. Cook, Stochastic sampling in computer graphics, ACM TOG 5(1), 1986",
+      .takes_count = true,
+      .takes_radius = true,
+      .min_distance = true,
+      .exact_count = true,
+      .compare = true,
+      // Measured over seeds 1-5: 2D box 0.758-0.761, torus 0.750-0.753; 3D box
+      // 0.795-0.803, torus 0.762-0.764 (random sequential adsorption jams at
+      // 0.777 in 2D, 0.803 in 3D; a finite failure bound stops a little below).
+      .rho = {{2, false, 0.02, 0.74, 0.78},
+              {2, true, 0.02, 0.73, 0.77},
+              {3, false, 0.08, 0.77, 0.83},
+              {3, true, 0.08, 0.74, 0.79}},
+      .params = {{"all-pairs", 0, 0, 1, true, "1: the literal check against every sample (same output, O(N) a dart)"},
+                 {"failures", 0, 0, 1e15, true,
+                  "consecutive rejected darts that end the loop; 0: max(10^4, packing bound at the radius)"},
+                 {"rho", kDartCountRho, 0.01, 1, false,
+                  "relative radius that sets the radius for --count without --radius"}},
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              DartThrowingParams params;
+              params.count = r.count;
+              params.radius = r.radius ? *r.radius : radius_for_count(*r.count, domain, r.param("rho", kDartCountRho));
+              params.all_pairs = r.param("all-pairs", 0) != 0;
+              params.max_failures = static_cast<std::uint64_t>(r.param("failures", 0));
+              return dart_throwing(params, domain, r.seed);
+            });
+          },
+  };
+  return method;
+}
+
+const Method& bridson_method() {
+  static const Method method{
+      .name = "bridson",
+      .family = Family::poisson_disk,
+      .docs = "docs/bridson.md",
+      .summary = "Bridson's fast Poisson disk sampling: k candidates in the annulus [r, 2r] around active samples",
+      .citation = "R. Bridson, Fast Poisson disk sampling in arbitrary dimensions, SIGGRAPH 2007 sketches",
+      .takes_count = true,
+      .takes_radius = true,
+      .min_distance = true,
+      .exact_count = true,
+      .compare = true,
+      // Measured over seeds 1-5: 2D box 0.732-0.739, torus 0.728-0.732; 3D box
+      // 0.762-0.769, torus 0.738-0.745 (k = 30 leaves more gaps).
+      .rho = {{2, false, 0.02, 0.71, 0.76},
+              {2, true, 0.02, 0.71, 0.75},
+              {3, false, 0.08, 0.74, 0.79},
+              {3, true, 0.08, 0.72, 0.76}},
+      .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
+                 {"rho", kBridsonCountRho, 0.01, 1, false,
+                  "relative radius that sets the radius for --count without --radius"}},
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              BridsonParams params;
+              params.k = static_cast<int>(r.param("k", 30));
+              params.count = r.count;
+              if (r.radius) {
+                params.radius = *r.radius;
+                return bridson(params, domain, r.seed);
+              }
+              // --count alone: the radius of relative radius rho; in the rare
+              // case that fewer fit (tiny counts), retry at a smaller radius.
+              params.radius = radius_for_count(*r.count, domain, r.param("rho", kBridsonCountRho));
+              for (int attempt = 0;; ++attempt) {
+                try {
+                  return bridson(params, domain, r.seed);
+                } catch (const InvalidArgument&) {
+                  if (attempt == 20) throw;
+                  params.radius *= 0.95;
+                }
+              }
+            });
+          },
+  };
+  return method;
+}
+
+const Method& best_candidate_method() {
+  static const Method method{
+      .name = "best-candidate",
+      .family = Family::poisson_disk,
+      .docs = "docs/best-candidate.md",
+      .summary = "Mitchell's best-candidate: each sample the farthest of m*i random candidates; progressive",
+      .citation = "D. P. Mitchell, Spectrally optimal sampling for distribution ray tracing, SIGGRAPH 1991",
+      .takes_count = true,
+      .takes_radius = true,
+      .min_distance = true,
+      .exact_count = true,
+      .progressive = true,
+      .compare = true,
+      // Measured over seeds 1-5 (m = 10; it stops at the first round whose best
+      // candidate is closer than the radius): 2D box 0.746-0.750, torus
+      // 0.729-0.740; 3D at r = 0.1, box 0.791-0.801, torus 0.747-0.749.
+      .rho = {{2, false, 0.02, 0.71, 0.78},
+              {2, true, 0.02, 0.70, 0.77},
+              {3, false, 0.1, 0.76, 0.83},
+              {3, true, 0.1, 0.72, 0.78}},
+      .params = {{"m", kBestCandidateDefaultM, 1, 1000, true, "candidates per sample already placed"}},
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              BestCandidateParams params;
+              params.count = r.count;
+              params.radius = r.radius;
+              params.m = static_cast<int>(r.param("m", kBestCandidateDefaultM));
+              return best_candidate(params, domain, r.seed);
+            });
+          },
+  };
+  return method;
+}
+
+}  // namespace pds::registry_detail
