@@ -14,8 +14,12 @@ all: build
 deps:
 	@bash scripts/install-deps.sh
 
+# ccache when present (the set-up installs it): the consumer tests rebuild the
+# core as a subproject, and those objects come from the cache.
+LAUNCHER = $(if $(shell command -v ccache),-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+
 build: deps
-	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
+	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(LAUNCHER) >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
 demo: build

@@ -4,12 +4,12 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ccache      # ccache: rebuilds and the consumer tests' nested builds reuse objects
   libgtest-dev libgmock-dev libbenchmark-dev   # tests and benchmarks
   libcli11-dev nlohmann-json3-dev              # command line and JSON output
   libcairo2-dev libpng-dev fonts-dejavu-core   # pictures (Cairo draws text with a system font)
   libfftw3-dev libgsl-dev                      # spectra, quasi-random sequences
-  libcgal-dev libtbb-dev                       # Delaunay/Voronoi, threads
+  libcgal-dev                                  # Delaunay/Voronoi (the cgal component)
 )
 
 missing=()
