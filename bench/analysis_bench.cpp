@@ -1,4 +1,4 @@
-// Benchmarks of the analysis (issue 5): the exact periodogram against the
+// Benchmarks of the analysis (docs/analysis.md): the exact periodogram against the
 // textbook direct DFT (one cos/sin pair per point and frequency, one thread),
 // the pair correlation function and the L2-star discrepancy.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Benchmarks of the fast Poisson disk methods (issue 6): Dunbar & Humphreys
+// Benchmarks of the fast Poisson disk methods (docs/benchmarks.md): Dunbar & Humphreys
 // boundary sampling and scalloped sectors, Wei's parallel sampler and Jones's Voronoi sampler, on the
 // 2D unit torus. The argument is the target sample count N; the radius is set
 // from each method's measured density so that it makes about N samples, and
@@ -133,7 +133,7 @@ void BM_Ebeida3D(benchmark::State& state) {
 }
 BENCHMARK(BM_Ebeida3D)->Arg(100'000)->Unit(benchmark::kMillisecond);
 
-// The baseline: dart throwing (issue 3) with its default failure bound, which
+// The baseline: dart throwing with its default failure bound, which
 // stops near rho 0.75 without maximality. Its failure bound grows with N, so
 // the cost is superlinear; 10^6 takes longer than a benchmark run should.
 void BM_DartThrowingBaseline(benchmark::State& state) {

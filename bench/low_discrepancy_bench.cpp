@@ -1,4 +1,4 @@
-// Benchmarks of the stratified and low-discrepancy patterns (issue 4) at
+// Benchmarks of the stratified and low-discrepancy patterns (docs/low-discrepancy.md) at
 // N = 10^6 points: each iteration builds the whole PointSet (allocation
 // included) in the unit square/cube, single-threaded. Peers in the same run:
 // white noise (one xoshiro draw per coordinate) and GSL's gsl_qrng_sobol /

@@ -1,5 +1,5 @@
-// Benchmarks of the Poisson disk methods of issue 3 (docs/benchmarks.md,
-// section "Poisson disk (issue 3)"). Items/s is samples produced per second
+// Benchmarks of the Poisson disk methods dart throwing, Bridson and
+// best-candidate (docs/benchmarks.md, section "Poisson disk"). Items/s is samples produced per second
 // on one thread.
 //
 //   build/bench/pds_bench --benchmark_filter='Bridson|Dart|BestCandidate'
@@ -108,7 +108,7 @@ void BM_BridsonTextbook(benchmark::State& state) {
 BENCHMARK(BM_BridsonTextbook)->Arg(10'000)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
 // Dart throwing with a count (relative radius 0.70, the --count default): the
-// slides' loop stopped at N.
+// textbook loop stopped at N.
 template <int D>
 void BM_DartThrowingCount(benchmark::State& state) {
   const auto domain = pds::Domain<D>::unit(true);

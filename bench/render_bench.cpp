@@ -1,4 +1,4 @@
-// Benchmarks of the renderer (issue 7): a 512 x 512 image at 4 spp through
+// Benchmarks of the renderer (docs/rendering.md): a 512 x 512 image at 4 spp through
 // each sampler and filter, on 1 and all threads; the per-pixel jittered
 // sampler is the baseline the tiled ones are measured against. Also the tiled
 // pattern's rectangle queries and the torus discrepancy sweep.

@@ -67,7 +67,7 @@ expect_exit 2 "lies outside the domain" -- analyze "$tmp/out_of_box.csv"
 expect_exit 0 "" -- analyze "$tmp/out_of_box.csv" --bounds 0,0,2,2
 expect_exit 2 "radius must be positive and finite" -- analyze "$tmp/a.csv" --radius 0
 
-# Low-discrepancy sequences (issue 4): exact values, seed ignored unless
+# Low-discrepancy sequences (docs/low-discrepancy.md): exact values, seed ignored unless
 # scrambled, a later range continues the sequence, bad parameters exit 2.
 "$pds" generate sobol -n 4 -d 3 >"$tmp/s.csv" && [[ $(sed -n 4p "$tmp/s.csv") == "0.75,0.25,0.25" ]] && ok ||
   bad "sobol's third point is not (3/4, 1/4, 1/4)"

@@ -1,6 +1,6 @@
 #pragma once
 // Nearest-neighbour and radial-spectrum statistics for comparing a sampler's
-// output with a reference process over several seeds (issue 6 tests).
+// output with a reference process over several seeds (the fast Poisson disk tests).
 
 #include <algorithm>
 #include <cmath>

@@ -69,7 +69,7 @@ struct ComparisonRow {
   RadialSpectrum radial;
 };
 
-/// The slides' comparison: for each row the spatial view beside the Fourier
+/// The comparison of Lagae & Dutre (2008), Fig. 4 style: for each row the spatial view beside the Fourier
 /// view (periodogram image and radial power), one row per method, one sheet.
 void plot_comparison(std::span<const ComparisonRow> rows, const std::string& path, int panel_size = 320);
 

@@ -5,7 +5,7 @@
 // block on any number of threads and come out the same.
 //
 // Names (make_image_sampler):
-//   random     uniform random (the slides' "Poisson" pattern): a Poisson process
+//   random     uniform random (the "Poisson" pattern of Agu's CS 563 notes): a Poisson process
 //              of spp points per pixel on average; pixel counts vary, so some
 //              pixels get none (holes) and others several (clusters)
 //   jittered   each pixel split into a x b strata (a * b = spp, a the largest

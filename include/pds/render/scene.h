@@ -24,7 +24,7 @@ class Scene {
 /// the image width), looking along the plane;
 /// the horizon lies `horizon` of the way down the image and the sky is 0.5.
 /// Towards the horizon the squares shrink without bound: every sampler aliases
-/// there, which is the slides' example.
+/// there, which is the example of Agu's CS 563 notes.
 class CheckerboardScene : public Scene {
  public:
   CheckerboardScene(int width, int height, double horizon = 0.25);

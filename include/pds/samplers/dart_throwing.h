@@ -1,5 +1,5 @@
 #pragma once
-// Dart throwing: the slides' Poisson disk algorithm. Darts are thrown
+// Dart throwing: the textbook Poisson disk algorithm (Cook 1986). Darts are thrown
 // uniformly at the domain; a dart closer than the radius to an accepted
 // sample is rejected, any other is accepted.
 // (Cook 1986; analysed as random sequential adsorption; Lagae & Dutre 2008.)
@@ -26,7 +26,7 @@ struct DartThrowingParams {
   double radius = 0.0;                 // minimum distance between samples, > 0
   std::optional<std::uint64_t> count;  // stop once this many are placed (error if they cannot be)
   std::uint64_t max_failures = 0;      // consecutive rejections that end the loop; 0: the default rule above
-  bool all_pairs = false;              // the slides' literal check against every sample, O(N) a dart
+  bool all_pairs = false;              // the textbook's literal check against every sample, O(N) a dart
 };
 
 /// Guarantees: no two samples closer than `radius` (the domain's metric, the

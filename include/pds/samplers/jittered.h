@@ -17,7 +17,7 @@ struct JitteredParams {
 /// One uniform point in each stratum, axis 0 varying fastest.
 /// Guarantees: exactly prod(cells) points, exactly one in each stratum, all in
 /// [lo, hi); same seed, same points. No minimum distance: neighbours in
-/// adjacent strata can be arbitrarily close (the clusters of the slides).
+/// adjacent strata can be arbitrarily close (the clusters that Cook 1986 and Mitchell 1991 note).
 /// Invalid: a stratum count below 1.
 template <int D>
 PointSet<D> jittered(const JitteredParams& params, const Domain<D>& domain, std::uint64_t seed);

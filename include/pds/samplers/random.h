@@ -1,5 +1,6 @@
 #pragma once
-// Uniform random points: white noise, the slides' "Poisson" pattern.
+// Uniform random points: white noise, the "Poisson" pattern of
+// E. Agu's CS 563 notes on Poisson disk sampling.
 
 #include <cstdint>
 

@@ -1,4 +1,4 @@
-// Dart throwing (the slides' Poisson disk loop; R. L. Cook, Stochastic
+// Dart throwing (the Poisson disk loop of E. Agu's CS 563 notes; R. L. Cook, Stochastic
 // sampling in computer graphics, ACM TOG 5(1), 1986; its statistics are those
 // of random sequential adsorption, see A. Lagae and P. Dutre, A comparison of
 // methods for generating Poisson disk distributions, CGF 27(1), 2008).
@@ -11,7 +11,7 @@
 // Domain::distance2; all samples in [lo, hi); each accepted sample is uniform
 // over the still-free region, so any prefix is a uniform Poisson disk set.
 //
-// Termination: the slides' loop runs until N samples are placed, forever if
+// Termination: the textbook loop runs until N samples are placed, forever if
 // they do not fit. Here it stops after a bound on consecutive rejections
 // (default max(10^4, packing bound)); with a count, hitting it is an
 // error that says how many were placed. When darts keep missing, the free area
@@ -41,7 +41,7 @@
 namespace pds {
 namespace {
 
-// The slides' check: every accepted sample, in order.
+// The textbook check: every accepted sample, in order.
 template <int D>
 class AllPairsCheck {
  public:
