@@ -73,12 +73,12 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "pds/error.h"
+#include "pds/grid_neighbourhood.h"
 #include "pds/rng.h"
 
 namespace pds {
@@ -86,10 +86,6 @@ namespace {
 
 constexpr int kMaxLevels = 10;
 constexpr int kMaxWindows = 1000;
-// The most level-0 cells a neighbourhood spans along an axis: 2 reach + 1
-// with reach <= floor(2 sqrt(D)) + 1 (cells of edge >= r / (2 sqrt(D)) when
-// an axis has two or more), or the whole axis.
-constexpr std::size_t kMaxSpan = 16;
 
 /// Poisson(1) by inversion of u in [0, 1): only +, / and comparisons on
 /// IEEE doubles from the literal e^-1, so every platform gives the same
@@ -201,8 +197,6 @@ class WeiSampler {
       total *= n_[i];
       // Cells within `reach` of a dart's cell hold every sample closer than r.
       reach_[i] = static_cast<int>(std::floor(r / edge_[i])) + 1;
-      if (n_[i] > static_cast<int>(kMaxSpan) && 2 * reach_[i] + 1 > static_cast<int>(kMaxSpan))
-        throw std::logic_error("wei: neighbourhood wider than kMaxSpan");
       period_[i] = reach_[i] + 1;
       // On a torus the last n mod period cells each get a group of their own
       // along this axis, so that no two cells of a group meet across the seam.
@@ -213,6 +207,7 @@ class WeiSampler {
     if (total > static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2))
       throw InvalidArgument("wei: radius " + std::to_string(r) +
                             " is too small for the domain (grid above 2^31 cells)");
+    hood_ = GridNeighbourhood<D>(domain, n_);
     std::size_t stride = 1;
     for (int i = 0; i < D; ++i) {
       stride_[i] = stride;
@@ -300,40 +295,10 @@ class WeiSampler {
   /// f returns false to stop. Returns false if f stopped it.
   template <class F>
   bool for_each_near(const std::array<int, D>& cell, F&& f) const {
-    // The (wrapped) coordinates of the block along each axis, then the
-    // block's cells with axis 0 innermost.
-    std::array<std::array<int, kMaxSpan>, D> at;
-    std::array<int, D> count, offset{};
-    for (int i = 0; i < D; ++i) {
-      int a = cell[i] - reach_[i], b = cell[i] + reach_[i];
-      if (domain_.periodic) {
-        if (b - a + 1 >= n_[i]) a = 0, b = n_[i] - 1;
-      } else {
-        a = std::max(a, 0);
-        b = std::min(b, n_[i] - 1);
-      }
-      count[i] = b - a + 1;
-      for (int k = 0; k < count[i]; ++k) {
-        const int c = a + k;
-        at[i][static_cast<std::size_t>(k)] = c < 0 ? c + n_[i] : (c >= n_[i] ? c - n_[i] : c);
-      }
-    }
-    std::array<int, D> c;
-    while (true) {
-      std::size_t row = 0;
-      for (int i = 1; i < D; ++i) {
-        c[i] = at[i][static_cast<std::size_t>(offset[i])];
-        row += static_cast<std::size_t>(c[i]) * stride_[i];
-      }
-      for (int k = 0; k < count[0]; ++k) {
-        c[0] = at[0][static_cast<std::size_t>(k)];
-        const Offset& o = grid_[row + static_cast<std::size_t>(c[0])];
-        if (!std::isnan(o[0]) && !f(sample(c, o))) return false;
-      }
-      int axis = 1;
-      while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
-      if (axis == D) return true;
-    }
+    return hood_.for_each_cell(hood_.window_around(cell, reach_), [&](std::size_t index, const std::array<int, D>& c) {
+      const Offset& o = grid_[index];
+      return std::isnan(o[0]) || f(sample(c, o));
+    });
   }
 
   /// A stored sample: its level-0 cell's corner plus its float offset. These
@@ -650,6 +615,7 @@ class WeiSampler {
   std::array<int, D> n_, reach_, period_, groups_, full_;
   std::array<double, D> edge_;
   std::array<std::size_t, D> stride_;
+  GridNeighbourhood<D> hood_;                             // the level-0 grid's windows
   std::array<std::vector<std::vector<int>>, D> members_;  // per axis: the coordinates of each group coordinate
   // The sample of each level-0 cell as a float offset from the cell's corner
   // (NaN if none): 8 bytes a cell in 2D instead of 16.
