@@ -68,6 +68,7 @@
 #include "pds/grid.h"
 #include "pds/grid_neighbourhood.h"
 #include "pds/limits.h"
+#include "pds/portable_math.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/sizing.h"
@@ -104,51 +105,6 @@ std::string format(double v) {
   os.precision(6);
   os << v;
   return os.str();
-}
-
-// e^-x for x >= 0 with only + * / (no libm), so that the Poisson draws are
-// the same on every platform: a Taylor series on x / 2^s, squared s times.
-double exp_neg(double x) {
-  int s = 0;
-  while (x > 0.0625) {
-    x *= 0.5;
-    ++s;
-  }
-  double term = 1.0, sum = 1.0;
-  for (int k = 1; k <= 12; ++k) {
-    term *= -x / k;
-    sum += term;
-  }
-  while (s--) sum *= sum;
-  return sum;
-}
-
-// Poisson(lambda) by inversion, given the uniform u >= p0 = e^-lambda that
-// already ruled out 0. Bounded by the support that matters (the tail beyond
-// lambda + 40 sqrt(lambda) + 100 has probability below 1e-300).
-std::uint64_t poisson_above_zero(double u, double lambda, double p0) {
-  double p = p0, cdf = p0;
-  std::uint64_t k = 0;
-  const double limit = lambda + 40.0 * std::sqrt(lambda) + 100.0;
-  while (u >= cdf && k < limit) {
-    ++k;
-    p *= lambda / static_cast<double>(k);
-    cdf += p;
-  }
-  return k;
-}
-
-// Poisson(mean) for any mean >= 0 from `rng`, as a sum of draws of mean <= 64
-// (inversion alone would underflow e^-mean for large means).
-std::uint64_t poisson(double mean, Rng& rng) {
-  std::uint64_t n = 0;
-  while (mean > 0.0) {
-    const double part = std::min(mean, 64.0);
-    mean -= part;
-    const double p0 = exp_neg(part), u = rng.uniform();
-    if (u >= p0) n += poisson_above_zero(u, part, p0);
-  }
-  return n;
 }
 
 // The domain cut into leaf cells (about kLeavesPerSample per sample, rebuilt
@@ -766,7 +722,7 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
         boxes->visit_idle_above(best, [&](std::size_t leaf) {
           // Most leaves draw no candidate: decide that from one hash.
           const std::uint64_t key = mix64(round_key ^ mix64(leaf + 0x632be59bd9b4e019ULL));
-          const double u = static_cast<double>(key >> 11) * 0x1.0p-53;
+          const double u = uniform_from_bits(key);
           if (u < p0) return;
           const std::uint64_t n = poisson_above_zero(u, leaf_mean, p0);
           Rng leaf_rng(key);

@@ -31,7 +31,7 @@
 // before it is refined; neither choice changes the distribution.
 //
 // Determinism: dart j of cell c at level l comes from a hash of (seed, l, c,
-// j); the waiting times use a logarithm written with + - * / and frexp only,
+// j); the waiting times use the portable logarithm of pds/portable_math.h,
 // so a seed gives the same samples on every platform.
 //
 // Guarantees: minimum distance r (checked with Domain::distance2, the same
@@ -54,6 +54,7 @@
 #include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/grid_neighbourhood.h"
+#include "pds/portable_math.h"
 #include "pds/rng.h"
 
 namespace pds {
@@ -73,28 +74,6 @@ constexpr double kWindow = 0.5;          // darts are settled window by window i
 constexpr int kMaxDepth = 2000;          // a chain of ever earlier darts (measured: 14 at 10^6); keeps the stack small
 constexpr std::size_t kMaxSubsPerCell = 4;  // open sub-cells per grid cell at any level (measured: at most 1.6)
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// -ln(u) for u in (0, 1], with frexp and + - * / only, so that the waiting
-/// times are the same bits on every platform (libm's log need not be).
-double neg_log(double u) {
-  int e = 0;
-  double m = std::frexp(u, &e);  // u = m 2^e, m in [1/2, 1)
-  if (m < 0.70710678118654752440) {
-    m *= 2.0;
-    --e;
-  }
-  // ln m = 2 atanh(z) = 2 (z + z^3/3 + z^5/5 + ...), |z| <= 0.172: the terms
-  // after z^19/19 add less than 1e-16 relative.
-  static constexpr double kInverseOdd[] = {1.0 / 1,  1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,
-                                           1.0 / 11, 1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19};
-  const double z = (m - 1.0) / (m + 1.0), z2 = z * z;
-  double series = kInverseOdd[9];
-  for (int k = 8; k >= 0; --k) series = series * z2 + kInverseOdd[k];
-  return -(e * 0.69314718055994530942 + 2.0 * z * series);
-}
-
-/// Uniform in [0, 1) from 64 hashed bits.
-double unit(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
 
 template <int D>
 class EbeidaSampler {
@@ -201,8 +180,7 @@ class EbeidaSampler {
 
   /// Waiting time before dart `dart` of a cell with `subs` open sub-cells.
   static double waiting_time(std::uint64_t key, std::uint32_t cell, std::uint32_t dart, std::uint32_t subs) {
-    const double u = static_cast<double>((dart_bits(dart_base(key, cell, dart), 0) >> 11) + 1) * 0x1.0p-53;  // (0, 1]
-    return neg_log(u) / subs;
+    return neg_log(uniform_open_from_bits(dart_bits(dart_base(key, cell, dart), 0))) / subs;
   }
 
   /// The lower corner and edge of sub-cell `code` of `cell` at the current level.
@@ -241,7 +219,7 @@ class EbeidaSampler {
       sub_box(c, code, lo, edge);
       Point<D> x;
       for (int a = 0; a < D; ++a) {
-        x[a] = lo[a] + unit(dart_bits(base, a + 1)) * edge[a];
+        x[a] = lo[a] + uniform_from_bits(dart_bits(base, a + 1)) * edge[a];
         const double upper = corners_[a][static_cast<std::size_t>(c[a]) + 1];
         if (!(x[a] < upper)) x[a] = std::nextafter(upper, lo[a]);
       }

@@ -79,6 +79,7 @@
 
 #include "pds/error.h"
 #include "pds/grid_neighbourhood.h"
+#include "pds/portable_math.h"
 #include "pds/rng.h"
 
 namespace pds {
@@ -86,21 +87,6 @@ namespace {
 
 constexpr int kMaxLevels = 10;
 constexpr int kMaxWindows = 1000;
-
-/// Poisson(1) by inversion of u in [0, 1): only +, / and comparisons on
-/// IEEE doubles from the literal e^-1, so every platform gives the same
-/// count (a libm exp might differ in the last bit between platforms).
-int poisson_one(double u) {
-  double p = 0.36787944117144233, cdf = p;  // e^-1
-  int n = 0;
-  // The bound stops rounding from running the sum forever (P < 1e-40 beyond it).
-  while (u >= cdf && n < 40) {
-    ++n;
-    p /= n;
-    cdf += p;
-  }
-  return n;
-}
 
 /// The darts of one unit (a level-0 cell, with its active fine cells above
 /// level 0) in one pass: a Poisson(active) number, each at a uniform time,
@@ -114,9 +100,9 @@ class Darts {
       : h_(mix64(key ^ mix64(cell + 0x9e3779b97f4a7c15ULL))), windows_(static_cast<std::uint64_t>(windows)) {
     // Poisson(active) as a sum of `active` Poisson(1) counts, one per active
     // cell, each from its own hash of h_ (the first from h_ itself).
-    count_ = poisson_one(uniform(h_));
+    count_ = poisson_one(uniform_from_bits(h_));
     for (std::size_t i = 1; i < active; ++i)
-      count_ += poisson_one(uniform(mix64(h_ ^ (static_cast<std::uint64_t>(i) * 0xd1b54a32d192ed03ULL))));
+      count_ += poisson_one(uniform_from_bits(mix64(h_ ^ (static_cast<std::uint64_t>(i) * 0xd1b54a32d192ed03ULL))));
   }
   int count() const { return count_; }
   int window(int dart) const {
@@ -125,7 +111,6 @@ class Darts {
   }
 
  private:
-  static double uniform(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
   std::uint64_t h_, windows_;
   int count_;
 };
