@@ -18,6 +18,7 @@
 
 #include "pds/domain.h"
 #include "pds/error.h"
+#include "pds/grid_neighbourhood.h"
 #include "pds/point.h"
 
 namespace pds {
@@ -35,6 +36,7 @@ class Grid {
     if (!(max_cell_edge > 0.0) || !std::isfinite(max_cell_edge))
       throw InvalidArgument("grid: cell edge must be positive and finite, got " + std::to_string(max_cell_edge));
     double total = 1.0;
+    std::array<int, D> cells;
     for (int i = 0; i < D; ++i) {
       const double n = std::max(1.0, std::ceil(domain.extent(i) / max_cell_edge));
       total *= n;
@@ -42,16 +44,11 @@ class Grid {
         throw InvalidArgument("grid: cell edge " + std::to_string(max_cell_edge) +
                               " is too small for the domain: the neighbour grid would need more than " +
                               std::to_string(max_cells) + " cells");
-      cells_[i] = static_cast<int>(n);
-      edge_[i] = domain.extent(i) / n;
+      cells[i] = static_cast<int>(n);
       inv_edge_[i] = n / domain.extent(i);
     }
-    std::size_t stride = 1;
-    for (int i = 0; i < D; ++i) {
-      stride_[i] = stride;
-      stride *= static_cast<std::size_t>(cells_[i]);
-    }
-    head_.assign(stride, -1);
+    hood_ = GridNeighbourhood<D>(domain, cells);
+    head_.assign(hood_.size(), -1);
     for (int i = 0; i < D; ++i)
       extent_scale_ = std::max({extent_scale_, std::abs(domain.lo[i]), std::abs(domain.hi[i])});
   }
@@ -65,18 +62,20 @@ class Grid {
   const PointSet<D>& points() const { return points_; }
   std::size_t size() const { return points_.size(); }
   std::size_t cell_count() const { return head_.size(); }
-  int cells(int axis) const { return cells_[axis]; }
-  double cell_edge(int axis) const { return edge_[axis]; }
+  int cells(int axis) const { return hood_.cells(axis); }
+  double cell_edge(int axis) const { return hood_.edge(axis); }
+  /// The cell arithmetic (windows, stencils) of this grid.
+  const GridNeighbourhood<D>& neighbourhood() const { return hood_; }
 
   /// Cell coordinate of x along one axis, clamped into the grid.
   int cell_coord(double x, int axis) const {
     const double c = std::floor((x - domain_.lo[axis]) * inv_edge_[axis]);
-    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(cells_[axis] - 1)));
+    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(hood_.cells(axis) - 1)));
   }
 
   std::size_t cell_of(const Point<D>& p) const {
     std::size_t c = 0;
-    for (int i = 0; i < D; ++i) c += static_cast<std::size_t>(cell_coord(p[i], i)) * stride_[i];
+    for (int i = 0; i < D; ++i) c += static_cast<std::size_t>(cell_coord(p[i], i)) * hood_.stride(i);
     return c;
   }
 
@@ -124,48 +123,20 @@ class Grid {
     // A small widening keeps a point at distance exactly r inside the range
     // despite the rounding of the cell arithmetic; extra cells cost nothing.
     r = r * (1.0 + 1e-12) + 1e-12 * extent_scale_;
-    std::array<int, D> first, count;
+    std::array<int, D> first, last;
     for (int i = 0; i < D; ++i) {
       const double x = p[i] - domain_.lo[i];
-      int a = static_cast<int>(std::floor((x - r) * inv_edge_[i]));
-      int b = static_cast<int>(std::floor((x + r) * inv_edge_[i]));
-      if (domain_.periodic) {
-        if (b - a + 1 >= cells_[i]) {
-          a = 0;
-          b = cells_[i] - 1;
-        }
-      } else {
-        a = std::max(a, 0);
-        b = std::min(b, cells_[i] - 1);
-        if (a > b) return true;
-      }
-      first[i] = a;
-      count[i] = b - a + 1;
+      first[i] = static_cast<int>(std::floor((x - r) * inv_edge_[i]));
+      last[i] = static_cast<int>(std::floor((x + r) * inv_edge_[i]));
     }
-    std::array<int, D> offset{};
-    while (true) {
-      std::size_t cell = 0;
-      for (int i = 0; i < D; ++i) {
-        int c = first[i] + offset[i];
-        if (c < 0)
-          c += cells_[i];
-        else if (c >= cells_[i])
-          c -= cells_[i];
-        cell += static_cast<std::size_t>(c) * stride_[i];
-      }
-      if (!f(cell)) return false;
-      int axis = 0;
-      while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
-      if (axis == D) return true;
-    }
+    return hood_.for_each_cell(hood_.window(first, last),
+                               [&](std::size_t cell, const std::array<int, D>&) { return f(cell); });
   }
 
  private:
   Domain<D> domain_;
-  std::array<int, D> cells_{};
-  std::array<double, D> edge_{};
+  GridNeighbourhood<D> hood_;
   std::array<double, D> inv_edge_{};
-  std::array<std::size_t, D> stride_{};
   double extent_scale_ = 0.0;
   std::vector<std::int32_t> head_;
   std::vector<std::int32_t> next_;

@@ -11,6 +11,7 @@
 
 #include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
+#include "pds/portable_math.h"
 #include "pds/registry.h"
 #include "pds/rng.h"
 #include "pds/samplers/sobol.h"
@@ -58,29 +59,6 @@ void check_rect(const PixelRect& r) {
       throw InvalidArgument("image sampler: rectangle coordinate " + std::to_string(v) + " is not a usable pixel");
 }
 
-// A Poisson variate of mean `mean` by inversion, in chunks of mean at most 500
-// so that exp(-mean) stays far from underflow (a sum of Poisson variates is
-// Poisson). O(mean) uniforms on average.
-std::uint64_t poisson(Rng& rng, double mean) {
-  std::uint64_t total = 0;
-  while (mean > 0) {
-    const double chunk = std::min(mean, 500.0);
-    mean -= chunk;
-    double p = std::exp(-chunk), cumulative = p;
-    const double u = rng.uniform();
-    std::uint64_t k = 0;
-    // The tail beyond chunk + 40 sqrt(chunk) + 40 has probability below 1e-300.
-    const auto limit = static_cast<std::uint64_t>(chunk + 40.0 * std::sqrt(chunk) + 40.0);
-    while (u >= cumulative && k < limit) {
-      ++k;
-      p *= chunk / static_cast<double>(k);
-      cumulative += p;
-    }
-    total += k;
-  }
-  return total;
-}
-
 // The homogeneous Poisson process of intensity spp: restricted to one pixel it
 // is a Poisson(spp) number of independent uniform points, and pixels are
 // independent, so each pixel can be drawn on its own.
@@ -91,7 +69,8 @@ class RandomSampler : public ImageSampler {
     check_rect(r);
     for_each_pixel(r, [&](std::int64_t px, std::int64_t py) {
       Rng rng(seed_, {static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)});
-      const std::uint64_t n = poisson(rng, spp());
+      // The portable draw (pds/portable_math.h): the same count on every platform.
+      const std::uint64_t n = poisson(static_cast<double>(spp()), rng);
       for (std::uint64_t i = 0; i < n; ++i) {
         const double x = static_cast<double>(px) + rng.uniform(), y = static_cast<double>(py) + rng.uniform();
         if (r.contains(x, y)) out.push_back(Point<2>{{x, y}});

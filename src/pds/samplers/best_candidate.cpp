@@ -66,7 +66,9 @@
 
 #include "pds/error.h"
 #include "pds/grid.h"
+#include "pds/grid_neighbourhood.h"
 #include "pds/limits.h"
+#include "pds/portable_math.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/sizing.h"
@@ -103,51 +105,6 @@ std::string format(double v) {
   os.precision(6);
   os << v;
   return os.str();
-}
-
-// e^-x for x >= 0 with only + * / (no libm), so that the Poisson draws are
-// the same on every platform: a Taylor series on x / 2^s, squared s times.
-double exp_neg(double x) {
-  int s = 0;
-  while (x > 0.0625) {
-    x *= 0.5;
-    ++s;
-  }
-  double term = 1.0, sum = 1.0;
-  for (int k = 1; k <= 12; ++k) {
-    term *= -x / k;
-    sum += term;
-  }
-  while (s--) sum *= sum;
-  return sum;
-}
-
-// Poisson(lambda) by inversion, given the uniform u >= p0 = e^-lambda that
-// already ruled out 0. Bounded by the support that matters (the tail beyond
-// lambda + 40 sqrt(lambda) + 100 has probability below 1e-300).
-std::uint64_t poisson_above_zero(double u, double lambda, double p0) {
-  double p = p0, cdf = p0;
-  std::uint64_t k = 0;
-  const double limit = lambda + 40.0 * std::sqrt(lambda) + 100.0;
-  while (u >= cdf && k < limit) {
-    ++k;
-    p *= lambda / static_cast<double>(k);
-    cdf += p;
-  }
-  return k;
-}
-
-// Poisson(mean) for any mean >= 0 from `rng`, as a sum of draws of mean <= 64
-// (inversion alone would underflow e^-mean for large means).
-std::uint64_t poisson(double mean, Rng& rng) {
-  std::uint64_t n = 0;
-  while (mean > 0.0) {
-    const double part = std::min(mean, 64.0);
-    mean -= part;
-    const double p0 = exp_neg(part), u = rng.uniform();
-    if (u >= p0) n += poisson_above_zero(u, part, p0);
-  }
-  return n;
 }
 
 // The domain cut into leaf cells (about kLeavesPerSample per sample, rebuilt
@@ -188,6 +145,7 @@ class GapBoxes {
         throw InvalidArgument("best-candidate: the request needs more than " + std::to_string(kMaxGridCells) +
                               " leaf cells");
     }
+    hood_ = GridNeighbourhood<D>(domain, cells_);
     volume_ = 1.0;
     half_diagonal_ = 0.0;
     for (int i = 0; i < D; ++i) {
@@ -268,29 +226,24 @@ class GapBoxes {
   /// cut (dirty, to be tightened again before the next draw).
   void add_sample(const Point<D>& p) {
     const double reach = this->reach();
-    std::array<int, D> first, count;
+    std::array<int, D> first, last;
     for (int i = 0; i < D; ++i) {
       const double x = (p[i] - domain_.lo[i]) / edge_[i] - 0.5;  // in units of leaves, from the first centre
       const double r = reach / edge_[i] + 0.5;                   // leaf centres within reach + half an edge
       double a = std::ceil(x - r), b = std::floor(x + r);
-      if (!std::isfinite(reach) || (domain_.periodic && b - a + 1 >= cells_[i])) {
+      if (!std::isfinite(reach)) {
         a = 0;
         b = cells_[i] - 1;
-      } else if (!domain_.periodic) {
-        a = std::max(a, 0.0);
-        b = std::min(b, cells_[i] - 1.0);
       }
-      if (a > b) return;
-      first[i] = static_cast<int>(a);
-      count[i] = static_cast<int>(b - a) + 1;
+      // Clamped only to stay in int range: the window is then the whole axis
+      // (torus) or clipped to it (box) as before.
+      first[i] = static_cast<int>(std::max(a, -2.0 * cells_[i]));
+      last[i] = static_cast<int>(std::min(b, 3.0 * cells_[i]));
     }
-    std::array<int, D> offset{};
-    while (true) {
+    hood_.for_each_cell(hood_.window(first, last), [&](std::size_t, const std::array<int, D>& cell) {
       double far2 = 0.0, near2 = 0.0;  // squared distance from p to the leaf's farthest and nearest points
-      std::array<int, D> cell;
       for (int i = 0; i < D; ++i) {
-        int c = first[i] + offset[i];
-        cell[i] = c = ((c % cells_[i]) + cells_[i]) % cells_[i];
+        const int c = cell[i];
         const double a = domain_.lo[i] + c * edge_[i];
         const double b = c + 1 == cells_[i] ? domain_.hi[i] : a + edge_[i];
         const double far = farthest(p[i], a, b, i), near = nearest(p[i], a, b, i);
@@ -304,10 +257,8 @@ class GapBoxes {
         dirty_[leaf] = 1;
         dirty_list_.push_back(leaf);
       }
-      int axis = 0;
-      while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
-      if (axis == D) return;
-    }
+      return true;
+    });
   }
 
   /// Leaves marked by add_sample() since the last call (read once).
@@ -551,6 +502,7 @@ class GapBoxes {
   Domain<D> domain_;
   std::array<int, D> cells_{};
   std::array<double, D> edge_{};
+  GridNeighbourhood<D> hood_;  // the leaves' windows (leaf ids are tiled, see id())
   std::array<int, D> tiles_{};
   std::array<std::size_t, D> tile_stride_{};
   std::size_t leaves_ = 0, size_ = 0;
@@ -770,7 +722,7 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
         boxes->visit_idle_above(best, [&](std::size_t leaf) {
           // Most leaves draw no candidate: decide that from one hash.
           const std::uint64_t key = mix64(round_key ^ mix64(leaf + 0x632be59bd9b4e019ULL));
-          const double u = static_cast<double>(key >> 11) * 0x1.0p-53;
+          const double u = uniform_from_bits(key);
           if (u < p0) return;
           const std::uint64_t n = poisson_above_zero(u, leaf_mean, p0);
           Rng leaf_rng(key);

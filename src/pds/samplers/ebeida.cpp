@@ -31,7 +31,7 @@
 // before it is refined; neither choice changes the distribution.
 //
 // Determinism: dart j of cell c at level l comes from a hash of (seed, l, c,
-// j); the waiting times use a logarithm written with + - * / and frexp only,
+// j); the waiting times use the portable logarithm of pds/portable_math.h,
 // so a seed gives the same samples on every platform.
 //
 // Guarantees: minimum distance r (checked with Domain::distance2, the same
@@ -53,6 +53,8 @@
 
 #include "pds/detail/format.h"
 #include "pds/error.h"
+#include "pds/grid_neighbourhood.h"
+#include "pds/portable_math.h"
 #include "pds/rng.h"
 
 namespace pds {
@@ -73,28 +75,6 @@ constexpr int kMaxDepth = 2000;          // a chain of ever earlier darts (measu
 constexpr std::size_t kMaxSubsPerCell = 4;  // open sub-cells per grid cell at any level (measured: at most 1.6)
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// -ln(u) for u in (0, 1], with frexp and + - * / only, so that the waiting
-/// times are the same bits on every platform (libm's log need not be).
-double neg_log(double u) {
-  int e = 0;
-  double m = std::frexp(u, &e);  // u = m 2^e, m in [1/2, 1)
-  if (m < 0.70710678118654752440) {
-    m *= 2.0;
-    --e;
-  }
-  // ln m = 2 atanh(z) = 2 (z + z^3/3 + z^5/5 + ...), |z| <= 0.172: the terms
-  // after z^19/19 add less than 1e-16 relative.
-  static constexpr double kInverseOdd[] = {1.0 / 1,  1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,
-                                           1.0 / 11, 1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19};
-  const double z = (m - 1.0) / (m + 1.0), z2 = z * z;
-  double series = kInverseOdd[9];
-  for (int k = 8; k >= 0; --k) series = series * z2 + kInverseOdd[k];
-  return -(e * 0.69314718055994530942 + 2.0 * z * series);
-}
-
-/// Uniform in [0, 1) from 64 hashed bits.
-double unit(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
-
 template <int D>
 class EbeidaSampler {
   // Grid cell states: >= 0 a sample index, kCovered (no sample and no dart can
@@ -102,13 +82,7 @@ class EbeidaSampler {
   static constexpr std::int32_t kCovered = -1;
   static constexpr std::int32_t kOpen = -2;
   static constexpr int kChildren = 1 << D;
-
-  /// Neighbour cells as offsets, nearest first, and the same as index offsets
-  /// for cells away from the border.
-  struct Neighbours {
-    std::vector<std::array<int, D>> offsets;
-    std::vector<std::ptrdiff_t> linear;
-  };
+  using Stencil = typename GridNeighbourhood<D>::Stencil;
 
   /// The open sub-cells of a slot: subs_[begin, begin + count) (level 0: the
   /// whole cell, nothing stored, so a slot there takes 16 bytes).
@@ -144,53 +118,21 @@ class EbeidaSampler {
       throw InvalidArgument("ebeida: radius " + detail::format_number(r) +
                             " is too small for coordinates of magnitude " + detail::format_number(scale));
     cover2_ = (r - slack) * (r - slack);
-    std::size_t stride = 1;
+    hood_ = GridNeighbourhood<D>(domain, n_);
+    const std::size_t stride = hood_.size();
     for (int a = 0; a < D; ++a) {
-      stride_[a] = stride;
-      stride *= static_cast<std::size_t>(n_[a]);
       corners_[a].resize(static_cast<std::size_t>(n_[a]) + 1);
       for (int i = 0; i < n_[a]; ++i) corners_[a][i] = domain.lo[a] + domain.extent(a) * i / n_[a];
       corners_[a][n_[a]] = domain.hi[a];
     }
     // The cells that can hold a sample closer than r to a point of a cell: the
-    // gap between the two cells along each axis is (|offset| - 1) edges.
-    std::array<int, D> reach;
-    for (int a = 0; a < D; ++a) {
-      const double edge = domain.extent(a) / n_[a];
-      // On a torus whose period is short next to r, offsets beyond half the
-      // cells revisit cells but reach other periodic images of their
-      // samples; refine() needs every image that can cover a sub-cell, so the
-      // reach is not cut at half a period.
-      reach[a] = static_cast<int>(std::ceil(r / edge)) + 1;
-      wrap_[a].resize(static_cast<std::size_t>(n_[a] + 2 * reach[a]));
-      for (int i = -reach[a]; i < n_[a] + reach[a]; ++i) {
-        const int wrapped = domain.periodic ? ((i % n_[a]) + n_[a]) % n_[a] : (i >= 0 && i < n_[a] ? i : -1);
-        wrap_[a][static_cast<std::size_t>(i + reach[a])] = wrapped;
-      }
-      reach_[a] = reach[a];
-    }
-    std::vector<std::pair<double, std::array<int, D>>> offsets;
-    std::array<int, D> o;
-    for (int a = 0; a < D; ++a) o[a] = -reach[a];
-    while (true) {
-      double gap2 = 0.0;
-      bool self = true;
-      for (int a = 0; a < D; ++a) {
-        const double gap = std::max(0, std::abs(o[a]) - 1) * (domain.extent(a) / n_[a]);
-        gap2 += gap * gap;
-        self = self && o[a] == 0;
-      }
-      if (!self && gap2 < r2_ * (1.0 + 1e-6)) offsets.push_back({gap2, o});
-      int a = 0;
-      while (a < D && ++o[a] > reach[a]) {
-        o[a] = -reach[a];
-        ++a;
-      }
-      if (a == D) break;
-    }
-    // Nearest cells first: a rejected dart usually stops at the first few.
-    std::stable_sort(offsets.begin(), offsets.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (const auto& [gap2, off] : offsets) add(near_, off);
+    // gap between the two cells along each axis is (|offset| - 1) edges;
+    // nearest cells first (a rejected dart usually stops at the first few).
+    // On a torus whose period is short next to r, offsets beyond half the
+    // cells revisit cells but reach other periodic images of their samples;
+    // refine() needs every image that can cover a sub-cell, so the stencil is
+    // not cut at half a period.
+    near_ = hood_.stencil_within(r, 1e-6);
     state_.assign(stride, kOpen);
     open_.resize(stride);
     const std::uint64_t key = key_ = level_key(0);
@@ -238,78 +180,7 @@ class EbeidaSampler {
 
   /// Waiting time before dart `dart` of a cell with `subs` open sub-cells.
   static double waiting_time(std::uint64_t key, std::uint32_t cell, std::uint32_t dart, std::uint32_t subs) {
-    const double u = static_cast<double>((dart_bits(dart_base(key, cell, dart), 0) >> 11) + 1) * 0x1.0p-53;  // (0, 1]
-    return neg_log(u) / subs;
-  }
-
-  std::array<int, D> coords(std::uint32_t cell) const {
-    std::array<int, D> c;
-    std::size_t rest = cell;
-    for (int a = 0; a < D; ++a) {
-      c[a] = static_cast<int>(rest % static_cast<std::size_t>(n_[a]));
-      rest /= static_cast<std::size_t>(n_[a]);
-    }
-    return c;
-  }
-
-  /// Calls f(neighbour cell index) for every cell that may hold a sample
-  /// closer than r to a point of `cell`, nearest first; stops when f is true.
-  template <class F>
-  bool any_neighbour(const Neighbours& neighbours, const std::array<int, D>& c, std::uint32_t cell, F&& f) const {
-    bool interior = true;
-    for (int a = 0; a < D; ++a) interior = interior && c[a] >= reach_[a] && c[a] + reach_[a] < n_[a];
-    if (interior) {
-      for (const std::ptrdiff_t off : neighbours.linear)
-        if (f(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + off))) return true;
-      return false;
-    }
-    for (const auto& off : neighbours.offsets) {
-      std::size_t index = 0;
-      bool inside = true;
-      for (int a = 0; a < D && inside; ++a) {
-        const int w = wrap_[a][static_cast<std::size_t>(c[a] + off[a] + reach_[a])];
-        inside = w >= 0;
-        index += static_cast<std::size_t>(w) * stride_[a];
-      }
-      if (inside && f(index)) return true;
-    }
-    return false;
-  }
-
-  /// Calls f(neighbour cell index, periods) for every offset of
-  /// `neighbours`: `periods` says by how many whole periods along each axis
-  /// the cell at that offset lies from the stored cell (zero on a box and
-  /// away from a torus's seam). Cells outside a box are skipped.
-  template <class F>
-  void for_each_image(const Neighbours& neighbours, const std::array<int, D>& c, std::uint32_t cell, F&& f) const {
-    bool interior = true;
-    for (int a = 0; a < D; ++a) interior = interior && c[a] >= reach_[a] && c[a] + reach_[a] < n_[a];
-    const std::array<int, D> none{};
-    if (interior) {
-      for (const std::ptrdiff_t off : neighbours.linear)
-        f(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + off), none);
-      return;
-    }
-    for (const auto& off : neighbours.offsets) {
-      std::size_t index = 0;
-      bool inside = true;
-      std::array<int, D> periods{};
-      for (int a = 0; a < D && inside; ++a) {
-        const int u = c[a] + off[a];
-        const int w = wrap_[a][static_cast<std::size_t>(u + reach_[a])];
-        inside = w >= 0;
-        index += static_cast<std::size_t>(w) * stride_[a];
-        periods[a] = (u - w) / n_[a];  // exact: u - w is a whole number of periods
-      }
-      if (inside) f(index, periods);
-    }
-  }
-
-  void add(Neighbours& neighbours, const std::array<int, D>& off) const {
-    neighbours.offsets.push_back(off);
-    std::ptrdiff_t linear = 0;
-    for (int a = 0; a < D; ++a) linear += off[a] * static_cast<std::ptrdiff_t>(stride_[a]);
-    neighbours.linear.push_back(linear);
+    return neg_log(uniform_open_from_bits(dart_bits(dart_base(key, cell, dart), 0))) / subs;
   }
 
   /// The lower corner and edge of sub-cell `code` of `cell` at the current level.
@@ -329,7 +200,7 @@ class EbeidaSampler {
     Open& open = open_[slot];
     if (!(open.next_time < until)) return;
     const std::uint64_t key = key_;
-    const std::array<int, D> c = coords(open.cell);
+    const std::array<int, D> c = hood_.coords(open.cell);
     while (open.next_time < until) {
       const double time = open.next_time;
       const std::uint32_t dart = open.darts++;
@@ -348,7 +219,7 @@ class EbeidaSampler {
       sub_box(c, code, lo, edge);
       Point<D> x;
       for (int a = 0; a < D; ++a) {
-        x[a] = lo[a] + unit(dart_bits(base, a + 1)) * edge[a];
+        x[a] = lo[a] + uniform_from_bits(dart_bits(base, a + 1)) * edge[a];
         const double upper = corners_[a][static_cast<std::size_t>(c[a]) + 1];
         if (!(x[a] < upper)) x[a] = std::nextafter(upper, lo[a]);
       }
@@ -357,7 +228,7 @@ class EbeidaSampler {
       // A sample seen here was kept earlier than this dart: a cell keeps a
       // dart only after settling all its neighbours up to that dart's time.
       std::int32_t blocker = -1;
-      const bool blocked = any_neighbour(near_, c, open.cell, [&](std::size_t n) {
+      const bool blocked = hood_.any(near_, c, open.cell, [&](std::size_t n) {
         std::int32_t s = state_[n];
         if (s <= kOpen) {
           const auto neighbour = static_cast<std::uint32_t>(kOpen - s);
@@ -447,19 +318,18 @@ class EbeidaSampler {
     // Only samples that can cover a whole child: along each axis the child's
     // far side lies at least a child edge (half of one in the same column)
     // beyond the gap between the cells. At level 1 that leaves the 3^D block.
-    Neighbours cover;
-    for (const auto& off : near_.offsets) {
+    const Stencil cover = hood_.filter(near_, [&](const std::array<int, D>& off) {
       double least2 = 0.0;
       for (int a = 0; a < D; ++a) {
         const double edge = domain_.extent(a) / n_[a], child = edge * level_scale_;
         const double least = off[a] == 0 ? 0.5 * child : (std::abs(off[a]) - 1) * edge + child;
         least2 += least * least;
       }
-      if (least2 < r2_) add(cover, off);
-    }
+      return least2 < r2_;
+    });
     for (std::uint32_t slot = 0; slot < open_.size(); ++slot) {
       const Open& o = open_[slot];
-      const std::array<int, D> c = coords(o.cell);
+      const std::array<int, D> c = hood_.coords(o.cell);
       std::array<double, D> cell_lo, edge;
       for (int a = 0; a < D; ++a) {
         cell_lo[a] = corners_[a][static_cast<std::size_t>(c[a])];
@@ -473,7 +343,7 @@ class EbeidaSampler {
       // be covered by any one of them (the minimum-image distance of the
       // darts sees them all); the image nearest the cell's corner alone
       // would leave such sub-cells open for ever.
-      for_each_image(cover, c, o.cell, [&](std::size_t n, const std::array<int, D>& periods) {
+      hood_.for_each_image(cover, c, o.cell, [&](std::size_t n, const std::array<int, D>& periods) {
         if (state_[n] >= 0) {
           const Point<D>& s = samples_[static_cast<std::size_t>(state_[n])];
           std::array<double, D> d;
@@ -551,11 +421,10 @@ class EbeidaSampler {
   int level_ = 0;
   std::uint64_t key_ = 0;     // level_key(level_)
   double level_scale_ = 1.0;  // 2^-level_
-  std::array<int, D> n_{}, reach_{};
-  std::array<std::size_t, D> stride_{};
+  std::array<int, D> n_{};
+  GridNeighbourhood<D> hood_;                   // the grid's cell arithmetic: wrap, stencils
   std::array<std::vector<double>, D> corners_;  // cell boundaries per axis, n + 1 each
-  std::array<std::vector<int>, D> wrap_;        // neighbour coordinate -> cell coordinate (-1: outside a box)
-  Neighbours near_;                             // the cells that may hold a sample closer than r to a point of a cell
+  Stencil near_;                                // the cells that may hold a sample closer than r to a point of a cell
   std::vector<std::int32_t> state_;
   std::vector<Open> open_;
   std::vector<Code> subs_;

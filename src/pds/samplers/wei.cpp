@@ -70,13 +70,14 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
-#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "pds/error.h"
+#include "pds/grid_neighbourhood.h"
 #include "pds/parallel.h"
+#include "pds/portable_math.h"
 #include "pds/rng.h"
 
 namespace pds {
@@ -84,25 +85,6 @@ namespace {
 
 constexpr int kMaxLevels = kWeiMaxLevels;
 constexpr int kMaxWindows = kWeiMaxWindows;
-// The most level-0 cells a neighbourhood spans along an axis: 2 reach + 1
-// with reach <= floor(2 sqrt(D)) + 1 (cells of edge >= r / (2 sqrt(D)) when
-// an axis has two or more), or the whole axis.
-constexpr std::size_t kMaxSpan = 16;
-
-/// Poisson(1) by inversion of u in [0, 1): only +, / and comparisons on
-/// IEEE doubles from the literal e^-1, so every platform gives the same
-/// count (a libm exp might differ in the last bit between platforms).
-int poisson_one(double u) {
-  double p = 0.36787944117144233, cdf = p;  // e^-1
-  int n = 0;
-  // The bound stops rounding from running the sum forever (P < 1e-40 beyond it).
-  while (u >= cdf && n < 40) {
-    ++n;
-    p /= n;
-    cdf += p;
-  }
-  return n;
-}
 
 /// The darts of one unit (a level-0 cell, with its active fine cells above
 /// level 0) in one pass: a Poisson(active) number, each at a uniform time,
@@ -116,9 +98,9 @@ class Darts {
       : h_(mix64(key ^ mix64(cell + 0x9e3779b97f4a7c15ULL))), windows_(static_cast<std::uint64_t>(windows)) {
     // Poisson(active) as a sum of `active` Poisson(1) counts, one per active
     // cell, each from its own hash of h_ (the first from h_ itself).
-    count_ = poisson_one(uniform(h_));
+    count_ = poisson_one(uniform_from_bits(h_));
     for (std::size_t i = 1; i < active; ++i)
-      count_ += poisson_one(uniform(mix64(h_ ^ (static_cast<std::uint64_t>(i) * 0xd1b54a32d192ed03ULL))));
+      count_ += poisson_one(uniform_from_bits(mix64(h_ ^ (static_cast<std::uint64_t>(i) * 0xd1b54a32d192ed03ULL))));
   }
   int count() const { return count_; }
   int window(int dart) const {
@@ -127,7 +109,6 @@ class Darts {
   }
 
  private:
-  static double uniform(std::uint64_t h) { return static_cast<double>(h >> 11) * 0x1.0p-53; }
   std::uint64_t h_, windows_;
   int count_;
 };
@@ -199,8 +180,6 @@ class WeiSampler {
       total *= n_[i];
       // Cells within `reach` of a dart's cell hold every sample closer than r.
       reach_[i] = static_cast<int>(std::floor(r / edge_[i])) + 1;
-      if (n_[i] > static_cast<int>(kMaxSpan) && 2 * reach_[i] + 1 > static_cast<int>(kMaxSpan))
-        throw std::logic_error("wei: neighbourhood wider than kMaxSpan");
       period_[i] = reach_[i] + 1;
       // On a torus the last n mod period cells each get a group of their own
       // along this axis, so that no two cells of a group meet across the seam.
@@ -211,6 +190,7 @@ class WeiSampler {
     if (total > static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2))
       throw InvalidArgument("wei: radius " + std::to_string(r) +
                             " is too small for the domain (grid above 2^31 cells)");
+    hood_ = GridNeighbourhood<D>(domain, n_);
     std::size_t stride = 1;
     for (int i = 0; i < D; ++i) {
       stride_[i] = stride;
@@ -294,40 +274,10 @@ class WeiSampler {
   /// f returns false to stop. Returns false if f stopped it.
   template <class F>
   bool for_each_near(const std::array<int, D>& cell, F&& f) const {
-    // The (wrapped) coordinates of the block along each axis, then the
-    // block's cells with axis 0 innermost.
-    std::array<std::array<int, kMaxSpan>, D> at;
-    std::array<int, D> count, offset{};
-    for (int i = 0; i < D; ++i) {
-      int a = cell[i] - reach_[i], b = cell[i] + reach_[i];
-      if (domain_.periodic) {
-        if (b - a + 1 >= n_[i]) a = 0, b = n_[i] - 1;
-      } else {
-        a = std::max(a, 0);
-        b = std::min(b, n_[i] - 1);
-      }
-      count[i] = b - a + 1;
-      for (int k = 0; k < count[i]; ++k) {
-        const int c = a + k;
-        at[i][static_cast<std::size_t>(k)] = c < 0 ? c + n_[i] : (c >= n_[i] ? c - n_[i] : c);
-      }
-    }
-    std::array<int, D> c;
-    while (true) {
-      std::size_t row = 0;
-      for (int i = 1; i < D; ++i) {
-        c[i] = at[i][static_cast<std::size_t>(offset[i])];
-        row += static_cast<std::size_t>(c[i]) * stride_[i];
-      }
-      for (int k = 0; k < count[0]; ++k) {
-        c[0] = at[0][static_cast<std::size_t>(k)];
-        const Offset& o = grid_[row + static_cast<std::size_t>(c[0])];
-        if (!std::isnan(o[0]) && !f(sample(c, o))) return false;
-      }
-      int axis = 1;
-      while (axis < D && ++offset[axis] == count[axis]) offset[axis++] = 0;
-      if (axis == D) return true;
-    }
+    return hood_.for_each_cell(hood_.window_around(cell, reach_), [&](std::size_t index, const std::array<int, D>& c) {
+      const Offset& o = grid_[index];
+      return std::isnan(o[0]) || f(sample(c, o));
+    });
   }
 
   /// A stored sample: its level-0 cell's corner plus its float offset. These
@@ -644,6 +594,7 @@ class WeiSampler {
   std::array<int, D> n_, reach_, period_, groups_, full_;
   std::array<double, D> edge_;
   std::array<std::size_t, D> stride_;
+  GridNeighbourhood<D> hood_;                             // the level-0 grid's windows
   std::array<std::vector<std::vector<int>>, D> members_;  // per axis: the coordinates of each group coordinate
   // The sample of each level-0 cell as a float offset from the cell's corner
   // (NaN if none): 8 bytes a cell in 2D instead of 16.
