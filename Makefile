@@ -2,6 +2,7 @@
 #   make demo   install dependencies, build (Release), run the showcase job
 #   make test   install dependencies, build, run every test
 MAKEFLAGS += --no-print-directory
+SHELL = /bin/bash
 BUILD ?= build
 JOBS ?= $(shell nproc)
 PDS = $(BUILD)/apps/pds/pds
@@ -43,7 +44,7 @@ fuzz: deps
 	  -DBUILD_SHARED_LIBS=OFF -DPDS_BUILD_FUZZ=ON -DPDS_BUILD_APPS=OFF -DPDS_BUILD_TESTS=OFF -DPDS_BUILD_BENCH=OFF \
 	  -DPDS_WITH_PLOT=OFF -DPDS_WITH_RENDER=OFF >/dev/null
 	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addsuffix _fuzz,$(FUZZ_TARGETS))
-	@for t in $(FUZZ_TARGETS); do \
+	@set -o pipefail; for t in $(FUZZ_TARGETS); do \
 	  corpus=fuzz/corpus/$$(case $$t in read_csv) echo csv;; read_npy) echo npy;; *) echo request;; esac); \
 	  mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
 	  echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
