@@ -8,7 +8,7 @@ JOBS ?= $(shell nproc)
 PDS = $(BUILD)/apps/pds/pds
 DEMO_DIR ?= out/demo
 
-.PHONY: all deps build demo test bench clean
+.PHONY: all deps build demo test bench fuzz clean
 
 all: build
 
@@ -34,6 +34,26 @@ test: build
 
 bench: build
 	@$(BUILD)/bench/pds_bench
+
+# libFuzzer under ASan and UBSan (clang): each target for FUZZ_SECONDS, from the
+# seeds in fuzz/corpus (the corpus it grows stays in the build folder). A
+# crash leaves its input in $(FUZZ_BUILD)/crash-* and fails the target.
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS = read_csv read_npy generate
+fuzz: deps
+	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo $(LAUNCHER) \
+	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link" \
+	  -DBUILD_SHARED_LIBS=OFF -DPDS_BUILD_FUZZ=ON -DPDS_BUILD_APPS=OFF -DPDS_BUILD_TESTS=OFF -DPDS_BUILD_BENCH=OFF \
+	  -DPDS_WITH_PLOT=OFF -DPDS_WITH_RENDER=OFF >/dev/null
+	@cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(addsuffix _fuzz,$(FUZZ_TARGETS))
+	@for t in $(FUZZ_TARGETS); do \
+	  corpus=fuzz/corpus/$$(case $$t in read_csv) echo csv;; read_npy) echo npy;; *) echo request;; esac); \
+	  mkdir -p $(FUZZ_BUILD)/corpus/$$t; \
+	  echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
+	  (cd $(FUZZ_BUILD) && ./fuzz/$${t}_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
+	    -print_final_stats=1 corpus/$$t ../$$corpus 2>&1 | tail -12) || exit 1; \
+	done
 
 clean:
 	rm -rf $(BUILD) out

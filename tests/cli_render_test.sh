@@ -16,6 +16,23 @@ d1=$(grep -F '"torus_min_distance"' "$tmp/out" | tr -dc '0-9.e-')
   bad "tile: same seed, different bytes"
 expect_exit 2 "unknown method" -- tile nope --count 10 -o "$tmp/x.npy"
 
+# tile + render --tile: a tile written by pds tile draws the same image as the
+# sampler that generates that tile itself (same method, count and seed), from
+# .npy and from .csv; radius-only methods are sized alike in both.
+for method in best-candidate ebeida; do
+  for ext in npy csv; do
+    "$pds" tile $method --count 300 --seed 4 -o "$tmp/tile.$ext" >/dev/null &&
+      "$pds" render --scene zone-plate --tile "$tmp/tile.$ext" --spp 2 --size 40x32 --seed 4 -o "$tmp/from_tile.png" &&
+      "$pds" render --scene zone-plate --sampler $method --tile-count 300 --spp 2 --size 40x32 --seed 4 -o "$tmp/direct.png" &&
+      cmp -s "$tmp/from_tile.png" "$tmp/direct.png" && ok || bad "render --tile ($method, .$ext) differs from --sampler $method"
+  done
+done
+expect_exit 0 "" -- render --tile "$tmp/tile.csv" --spp 2 --size 16x16 --metrics --reference-spp 4 -o "$tmp/x.png"
+grep -qF '"tile_file":' "$tmp/out" && grep -qF '"tile_points":' "$tmp/out" && ok || bad "render --tile metrics"
+expect_exit 2 "--sampler does not apply" -- render --tile "$tmp/tile.csv" --sampler bridson --size 8x8 -o "$tmp/x.png"
+"$pds" generate random --count 10 --bounds 0,0,2,1 -o "$tmp/wide.csv"
+expect_exit 2 "unit torus" -- render --tile "$tmp/wide.csv" --size 8x8 -o "$tmp/x.png"
+
 # render: a PNG, the same bytes for the same seed on any thread count.
 expect_exit 0 "" -- render --scene checkerboard --sampler jittered --spp 4 --size 64x48 -o "$tmp/a.png" --threads 1
 is_png "$tmp/a.png" && ok || bad "render did not write a PNG"

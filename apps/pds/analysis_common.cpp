@@ -3,7 +3,6 @@
 #include <charconv>
 #include <fstream>
 
-#include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
 
 namespace pds::cli {
@@ -23,17 +22,56 @@ std::map<std::string, double> parse_params(const std::vector<std::string>& items
   return params;
 }
 
-std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets) {
-  const Method& m = find_method(method);
-  if (request.count && !request.radius && !m.takes_count && m.takes_radius) {
-    double volume = 1.0;
-    visit_dim(request.dim, [&](auto d) {
-      volume = request.domain<decltype(d)::value>().volume();
-      return 0;
-    });
-    request.radius = 2.0 * 0.75 * max_packing_radius(volume, *request.count, request.dim);
-    request.count.reset();
+void add_generation_options(CLI::App& command, GenerationOptions& o, const GenerationOptionSet& set) {
+  const auto help = [&](const std::string& text) { return set.scope.empty() ? text : text + " (" + set.scope + ")"; };
+  if (set.default_count) o.count = set.default_count;
+  o.count_option = command.add_option("--count,-n", o.count, help("Number of points (per set)"));
+  if (set.default_count) o.count_option->capture_default_str();
+  o.added = {o.count_option};
+  if (set.radius) {
+    o.radius_option = command.add_option("--radius,-r", o.radius, help("Minimum distance between any two samples"));
+    o.added.push_back(o.radius_option);
   }
+  if (set.dim)
+    o.added.push_back(command.add_option("--dim,-d", o.domain.dim, help("Dimension (2 or 3)"))->capture_default_str());
+  if (set.domain) add_domain_options(command, o.domain, false);
+  o.added.push_back(
+      command
+          .add_option("--seed,-s", o.seed, help("Random seed (of the first set); the same seed gives the same bytes"))
+          ->capture_default_str());
+  o.added.push_back(command.add_option("--threads,-t", o.threads, help("Threads for parallel methods (0: all cores)"))
+                        ->capture_default_str());
+  o.added.push_back(
+      command.add_option("--max-points", o.max_points, help("Refuse requests that could produce more points"))
+          ->capture_default_str());
+  o.added.push_back(command.add_option("--param,-P", o.params, help("Method parameter NAME=VALUE (repeatable)")));
+}
+
+GenerateRequest generation_request(const GenerationOptions& o, const GenerationOptionSet& set) {
+  GenerateRequest request;
+  request.dim = o.domain.dim;
+  request.torus = o.domain.torus;
+  split_bounds(o.domain, request.dim, request.lo, request.hi);
+  if (o.count_option && o.count_option->count())
+    request.count = o.count;
+  else if (set.default_count)
+    request.count = set.default_count;
+  if (o.radius_option && o.radius_option->count()) request.radius = o.radius;
+  request.seed = o.seed;
+  request.threads = o.threads;
+  request.max_points = o.max_points;
+  request.params = parse_params(o.params);
+  return request;
+}
+
+bool any_generation_option_given(const GenerationOptions& o) {
+  for (const CLI::Option* option : o.added)
+    if (option->count()) return true;
+  return false;
+}
+
+std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets) {
+  request = size_request(find_method(method), std::move(request));
   std::vector<PointCloud> out;
   const std::uint64_t first = request.seed;
   for (std::size_t s = 0; s < sets; ++s) {

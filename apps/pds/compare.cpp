@@ -17,13 +17,14 @@ namespace {
 
 struct CompareOptions {
   std::vector<std::string> methods;
-  std::uint64_t count = 1024;
+  GenerationOptions generation;  // on the unit torus in 2D, so neither --dim nor a domain
   std::size_t sets = 10;
-  std::uint64_t seed = 0;
   int max_frequency = 64;
   int panel = 320;
   std::string output;
 };
+
+const GenerationOptionSet kCompareGeneration{.radius = false, .dim = false, .domain = false, .default_count = 1024};
 
 /// The default rows: the methods the registry marks for comparison, in its
 /// order (white noise, stratified, then the Poisson disk families).
@@ -43,10 +44,9 @@ void add_compare(CLI::App& app) {
   std::string defaults;
   for (const std::string& name : default_methods()) defaults += (defaults.empty() ? "" : ", ") + name;
   cmd->add_option("methods", opt->methods, "Methods to compare (default: " + defaults + ")");
-  cmd->add_option("--count,-n", opt->count, "Points per set")->capture_default_str();
+  add_generation_options(*cmd, opt->generation, kCompareGeneration);
   cmd->add_option("--sets,-M", opt->sets, "Realisations averaged in the spectrum (seeds SEED, SEED+1, ...)")
       ->capture_default_str();
-  cmd->add_option("--seed,-s", opt->seed, "Seed of the first set")->capture_default_str();
   cmd->add_option("--frequencies,-K", opt->max_frequency, "Periodogram frequencies -K..K per axis")
       ->capture_default_str();
   cmd->add_option("--panel", opt->panel, "Size of each panel")->capture_default_str();
@@ -60,10 +60,8 @@ void add_compare(CLI::App& app) {
     std::vector<ComparisonRow> rows;
     for (const std::string& name : names) {
       find_method(name);  // names the known methods if unknown
-      GenerateRequest request;
+      GenerateRequest request = generation_request(opt->generation, kCompareGeneration);
       request.torus = true;
-      request.count = opt->count;
-      request.seed = opt->seed;
       std::vector<PointSet<2>> sets;
       for (const PointCloud& c : generate_sets(name, request, opt->sets)) sets.push_back(c.as<2>());
       const Domain<2> domain = Domain<2>::unit(true);

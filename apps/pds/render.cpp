@@ -6,18 +6,18 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "analysis_common.h"
 #include "commands.h"
 #include "pds/error.h"
+#include "pds/io/point_file.h"
+#include "pds/io/render_json.h"
+#include "pds/render/metrics.h"
 #include "pds/render/png.h"
 
 namespace pds::cli {
 namespace {
-
-using Json = nlohmann::ordered_json;
 
 struct RenderCommonOptions {
   std::string scene = "checkerboard";
@@ -71,48 +71,11 @@ void check_reference_spp(int spp, int width, int height) {
 struct RenderOptionsCli : RenderCommonOptions {
   std::string sampler = "jittered";
   int spp = 4;
+  std::string tile;  // a tile file from `pds tile`, instead of generating one
   std::string output;
   std::string error_png, spectrum_png, samples_spectrum_png;
   bool metrics = false;
 };
-
-// Error measures of one rendering against the reference, as JSON.
-Json measure(const Image& image, const Image& reference, const ImageSampler& sampler, Image* error_out,
-             Image* spectrum_out, Image* density_spectrum = nullptr) {
-  Json out;
-  const double e = rmse(image, reference);
-  out["rmse"] = e;
-  out["psnr_db"] = std::isfinite(psnr(e)) ? Json(psnr(e)) : Json(nullptr);
-  const Image error = difference(image, reference);
-  const Image spectrum = power_spectrum(error);
-  // White error would put pi * 0.25^2 = 19.6% of its power below a quarter cycle per pixel.
-  out["error_low_frequency_share"] = low_frequency_share(spectrum, 0.25);
-  // Eight rings of 1/16 cycle per pixel, as multiples of the error's mean power.
-  std::vector<double> profile = radial_power_profile(spectrum, 8);
-  const double mean_power = e * e;  // Parseval: mean periodogram value = mean squared error
-  for (double& v : profile) v = mean_power > 0 ? v / mean_power : 0.0;
-  out["error_radial_profile"] = profile;
-  if (const TiledPattern* t = sampler.tiled()) {
-    out["tile_points"] = t->tile_count();
-    out["tile_period_px"] = t->tile_size();
-    out["error_tile_peak_ratio"] = period_peak_ratio(spectrum, t->tile_size());
-    out["error_power_on_tile_lattice"] = period_power_share(spectrum, t->tile_size());
-  }
-  if (density_spectrum || sampler.tiled()) {
-    // The samples themselves, on a half-pixel grid (whole pixels for the largest
-    // images): periodic patterns show
-    // their tile frequency here whatever the scene.
-    const int cells = std::max(image.width, image.height) <= kMaxImageSide / 2 ? 2 : 1;
-    const Image density = power_spectrum(sample_density(sampler, image.width, image.height, cells));
-    if (sampler.tiled())
-      out["samples_power_on_tile_lattice"] = period_power_share(density, sampler.tiled()->tile_size() * cells);
-    out["samples_low_frequency_share"] = low_frequency_share(density, 0.25 / cells);
-    if (density_spectrum) *density_spectrum = density;
-  }
-  if (error_out) *error_out = error;
-  if (spectrum_out) *spectrum_out = spectrum;
-  return out;
-}
 
 }  // namespace
 
@@ -126,20 +89,34 @@ void add_render(CLI::App& app) {
   add_common(*cmd, *opt);
   cmd->add_option("--sampler", opt->sampler, "Sampler")->capture_default_str();
   cmd->add_option("--spp", opt->spp, "Samples per pixel (any positive integer)")->capture_default_str();
+  cmd->add_option("--tile", opt->tile,
+                  "Tile the image plane with this toroidal tile (.npy or .csv on the unit torus, e.g. from pds tile) "
+                  "instead of generating one");
   cmd->add_option("--output,-o", opt->output, "Output PNG")->required();
   cmd->add_option("--error", opt->error_png, "Also write the error image (grey 0.5 = no error, +-0.25 full scale)");
   cmd->add_option("--spectrum", opt->spectrum_png, "Also write the error's power spectrum (log scale, DC at centre)");
   cmd->add_option("--samples-spectrum", opt->samples_spectrum_png,
                   "Also write the power spectrum of the sample positions (counts on a half-pixel grid, log scale)");
   cmd->add_flag("--metrics", opt->metrics, "Print RMSE and PSNR against the reference as JSON");
-  cmd->callback([opt] {
+  cmd->callback([opt, cmd] {
     const auto [w, h] = parse_size(opt->size);
     check_reference_spp(opt->reference_spp, w, h);
     RenderOptions ro{parse_filter(opt->filter), opt->threads};
     const auto scene = make_scene(opt->scene, w, h);
-    const auto sampler = make_image_sampler(
-        opt->sampler,
-        {.spp = opt->spp, .seed = opt->seed, .tile_count = opt->tile_count, .params = parse_params(opt->params)});
+    const ImageSamplerOptions sampler_options{
+        .spp = opt->spp, .seed = opt->seed, .tile_count = opt->tile_count, .params = parse_params(opt->params)};
+    std::unique_ptr<ImageSampler> sampler;
+    if (!opt->tile.empty()) {
+      for (const char* name : {"--sampler", "--tile-count", "--param"})
+        if (cmd->get_option(name)->count())
+          throw InvalidArgument(std::string("--tile gives the pattern; ") + name + " does not apply");
+      const PointCloud tile = read_points(opt->tile);
+      if (tile.dim != 2)
+        throw InvalidArgument("--tile: '" + opt->tile + "' has dimension " + std::to_string(tile.dim) + ", need 2");
+      sampler = make_tiled_sampler("tile", tile.as<2>(), sampler_options);
+    } else {
+      sampler = make_image_sampler(opt->sampler, sampler_options);
+    }
     RenderStats stats;
     const auto start = std::chrono::steady_clock::now();
     const Image image = render(*scene, *sampler, w, h, ro, &stats);
@@ -148,23 +125,24 @@ void add_render(CLI::App& app) {
     if (!opt->metrics && opt->error_png.empty() && opt->spectrum_png.empty() && opt->samples_spectrum_png.empty())
       return;
     const Image reference = render_reference(*scene, w, h, opt->reference_spp, ro);
-    Image error, spectrum, density;
-    Json out;
-    out["scene"] = opt->scene;
-    out["sampler"] = opt->sampler;
-    out["spp"] = opt->spp;
-    out["filter"] = opt->filter;
-    out["size"] = {w, h};
-    out["seed"] = opt->seed;
-    out["reference_spp"] = opt->reference_spp;
-    out["samples_evaluated"] = stats.samples;
-    out["empty_pixels"] = stats.empty_pixels;
-    out["render_seconds"] = seconds;
-    out.update(measure(image, reference, *sampler, &error, &spectrum, &density));
-    if (!opt->samples_spectrum_png.empty()) write_png(opt->samples_spectrum_png, log_spectrum(density));
-    if (!opt->error_png.empty()) write_png(opt->error_png, error, {-0.25, 0.25});
-    if (!opt->spectrum_png.empty()) write_png(opt->spectrum_png, log_spectrum(spectrum));
-    std::cout << out.dump(2) << std::endl;
+    RenderMetricImages images;
+    const RenderReport report{.scene = opt->scene,
+                              .sampler = opt->tile.empty() ? opt->sampler : "tile",
+                              .tile_file = opt->tile,
+                              .spp = opt->spp,
+                              .filter = opt->filter,
+                              .width = w,
+                              .height = h,
+                              .seed = opt->seed,
+                              .reference_spp = opt->reference_spp,
+                              .samples_evaluated = stats.samples,
+                              .empty_pixels = stats.empty_pixels,
+                              .render_seconds = seconds,
+                              .metrics = measure_render(image, reference, *sampler, true, &images)};
+    if (!opt->samples_spectrum_png.empty()) write_png(opt->samples_spectrum_png, log_spectrum(images.samples_spectrum));
+    if (!opt->error_png.empty()) write_png(opt->error_png, images.error, {-0.25, 0.25});
+    if (!opt->spectrum_png.empty()) write_png(opt->spectrum_png, log_spectrum(images.error_spectrum));
+    std::cout << render_report_json(report) << std::endl;
   });
 }
 
@@ -194,32 +172,24 @@ void add_render_sheet(CLI::App& app) {
     const Image reference = render_reference(*scene, w, h, opt->reference_spp, ro);
     const auto params = parse_params(opt->params);
     std::vector<SheetPanel> panels;
-    Json rows = Json::array();
+    RenderSheetReport report{
+        .scene = opt->scene, .width = w, .height = h, .filter = opt->filter, .reference_spp = opt->reference_spp};
     for (int spp : opt->spps)
       for (const std::string& name : opt->samplers) {
         const auto sampler =
             make_image_sampler(name, {.spp = spp, .seed = opt->seed, .tile_count = opt->tile_count, .params = params});
         const Image image = render(*scene, *sampler, w, h, ro);
-        Json row;
-        row["sampler"] = name;
-        row["spp"] = spp;
-        row.update(measure(image, reference, *sampler, nullptr, nullptr));
+        report.panels.push_back({name, spp, measure_render(image, reference, *sampler)});
         char label[160];
-        std::snprintf(label, sizeof label, "%s, %d spp: RMSE %.4f", name.c_str(), spp, row["rmse"].get<double>());
+        std::snprintf(label, sizeof label, "%s, %d spp: RMSE %.4f", name.c_str(), spp,
+                      report.panels.back().metrics.rmse);
         panels.push_back({image, label});
-        rows.push_back(row);
       }
     std::ostringstream title;
     title << opt->scene << ", " << opt->filter << " filter, error against " << opt->reference_spp
           << " jittered spp, seed " << opt->seed;
     write_sheet(opt->output, panels, static_cast<int>(opt->samplers.size()), title.str());
-    Json out;
-    out["scene"] = opt->scene;
-    out["size"] = {w, h};
-    out["filter"] = opt->filter;
-    out["reference_spp"] = opt->reference_spp;
-    out["panels"] = rows;
-    std::cout << out.dump(2) << std::endl;
+    std::cout << render_sheet_json(report) << std::endl;
   });
 }
 

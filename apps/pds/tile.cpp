@@ -16,12 +16,7 @@ namespace {
 
 struct TileOptions {
   std::string method;
-  int dim = 2;
-  std::uint64_t count = 0;
-  double radius = 0;
-  std::uint64_t seed = 0;
-  int threads = 0;
-  std::vector<std::string> params;
+  GenerationOptions generation;  // on the unit torus, so no domain options
   std::string output;
 };
 
@@ -33,23 +28,15 @@ void add_tile(CLI::App& app) {
       "tile", "Generate a tileable pattern: METHOD run on the unit torus, so its minimum distance holds across seams");
   cmd->footer(methods_help());
   cmd->add_option("method", opt->method, "Sampling method (see the list below)")->required();
-  auto* count = cmd->add_option("--count,-n", opt->count, "Number of points");
-  auto* radius = cmd->add_option("--radius,-r", opt->radius, "Minimum distance between any two samples (torus)");
-  cmd->add_option("--dim,-d", opt->dim, "Dimension (2 or 3)")->capture_default_str();
-  cmd->add_option("--seed,-s", opt->seed, "Random seed; the same seed gives the same bytes")->capture_default_str();
-  cmd->add_option("--threads,-t", opt->threads, "Threads for parallel methods (0: all cores)")->capture_default_str();
-  cmd->add_option("--param,-P", opt->params, "Method parameter NAME=VALUE (repeatable)");
+  add_generation_options(*cmd, opt->generation, {.domain = false});
   cmd->add_option("--output,-o", opt->output, "Output file (.npy or .csv); '-' for CSV on stdout")->required();
-  cmd->callback([opt, count, radius] {
-    GenerateRequest request;
-    request.dim = opt->dim;
+  cmd->callback([opt] {
+    GenerateRequest request = generation_request(opt->generation, {.domain = false});
     request.torus = true;
-    if (count->count()) request.count = opt->count;
-    if (radius->count()) request.radius = opt->radius;
-    request.seed = opt->seed;
-    request.threads = opt->threads;
-    request.params = parse_params(opt->params);
-    const PointCloud points = generate(opt->method, request);
+    // Sized as the tiled render samplers size their tiles (pds::generate_tile),
+    // so `pds render --tile` of this file and `pds render --sampler METHOD`
+    // with the same count and seed draw the same samples.
+    const PointCloud points = generate(opt->method, size_request(find_method(opt->method), request));
     write_points(opt->output, points);
     if (opt->output == "-") return;
     // A summary: the toroidal minimum distance is what survives tiling.

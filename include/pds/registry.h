@@ -100,6 +100,24 @@ const Method& find_method(const std::string& name);
 /// parameters, point budget) and runs it.
 PointCloud generate(const std::string& method, const GenerateRequest& request);
 
+/// The relative radius (Lagae & Dutre 2008; analysis/relative_radius.h) at
+/// which a count is turned into a radius for a method that takes only a
+/// radius. Maximal Poisson disk sets reach about 0.72-0.90 depending on the
+/// method (the rho bands of each entry), so at 0.75 such a method places
+/// about the requested count or somewhat more, never far fewer.
+inline constexpr double kCountRelativeRadius = 0.75;
+
+/// The one count-to-radius policy above the samplers, used wherever a count
+/// is asked of any method (pds compare, pds analyze --method, pds tile,
+/// tiled render samplers): a request with a count and no radius, for a
+/// method that takes only a radius, becomes the request for the minimum
+/// distance at which `count` points have relative radius
+/// kCountRelativeRadius in the request's domain (pds::radius_for_count);
+/// every other request is returned unchanged, so methods that take a count
+/// keep their own sizing (dart throwing's and Bridson's `rho` parameters).
+/// Throws InvalidArgument for a count of 0 or bad bounds.
+GenerateRequest size_request(const Method& method, GenerateRequest request);
+
 /// Calls f(domain) with the request's typed Domain<D> and packs the returned
 /// PointSet<D>; the glue between a typed sampler and the registry.
 template <class F>

@@ -18,9 +18,10 @@
 //              (pds::generate with torus = true) and repeated over the plane by
 //              TiledPattern, spp samples per pixel on average
 //   tiled:METHOD  the same for a method whose name is taken above (tiled:jittered)
-// Methods that take --count get tile_count; radius-only methods get the radius
-// at which a set of relative radius kTileRelativeRadius holds tile_count
-// points, and the tile keeps however many points they place.
+// Methods that take --count get tile_count; radius-only methods are sized by
+// the registry's policy (pds::size_request: the radius at which tile_count
+// points have relative radius kCountRelativeRadius), and the tile keeps
+// however many points they place.
 
 #include <array>
 #include <cstdint>
@@ -33,10 +34,6 @@
 #include "pds/tiling/tiled_pattern.h"
 
 namespace pds {
-
-/// Relative radius used to size radius-driven tiles (maximal Poisson-disk sets
-/// reach about 0.72-0.76, so the tile comes out near tile_count points).
-inline constexpr double kTileRelativeRadius = 0.75;
 
 /// Largest spp a sampler accepts (a 512 x 512 image at this density is 2.7e11 samples).
 inline constexpr int kMaxSpp = 1 << 20;
@@ -73,11 +70,21 @@ class ImageSampler {
 /// unknown name, spp < 1 or a tile_count the method rejects.
 std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const ImageSamplerOptions& options);
 
+/// A tiled sampler called `name` over a given tile: a pattern on the unit
+/// torus (at least one point, every coordinate in [0, 1)), e.g. one written
+/// by `pds tile`. options.tile_count and options.params are not used; the
+/// same tile, spp and seed give the same samples as make_image_sampler for
+/// the method and count that made the tile. Throws InvalidArgument for spp
+/// out of range or a tile TiledPattern rejects.
+std::unique_ptr<ImageSampler> make_tiled_sampler(const std::string& name, PointSet<2> tile,
+                                                 const ImageSamplerOptions& options);
+
 /// Strata per pixel for jittered sampling: {a, b} with a * b = spp, a <= b.
 std::array<int, 2> pixel_strata(int spp);
 
 /// Generates the tile a tiled sampler uses: `method` on the unit torus with
-/// about `count` points (see above).
+/// about `count` points (see above); the same request as `pds tile METHOD
+/// --count N`.
 PointSet<2> generate_tile(const std::string& method, std::uint64_t count, std::uint64_t seed,
                           const std::map<std::string, double>& params = {});
 

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
 #include "pds/portable_math.h"
 #include "pds/registry.h"
@@ -26,17 +25,13 @@ std::array<int, 2> pixel_strata(int spp) {
 
 PointSet<2> generate_tile(const std::string& method, std::uint64_t count, std::uint64_t seed,
                           const std::map<std::string, double>& params) {
-  const Method& m = find_method(method);
   GenerateRequest request;
   request.dim = 2;
   request.torus = true;
   request.seed = seed;
   request.params = params;
-  if (m.takes_count)
-    request.count = count;
-  else
-    request.radius = 2.0 * kTileRelativeRadius * max_packing_radius(1.0, count, 2);
-  const PointCloud cloud = generate(method, request);
+  request.count = count;
+  const PointCloud cloud = generate(method, size_request(find_method(method), request));
   if (cloud.size() == 0) throw Failure("tile: method " + method + " returned no points");
   return cloud.as<2>();
 }
@@ -130,9 +125,8 @@ class SobolPixelSampler : public ImageSampler {
 
 class TiledSampler : public ImageSampler {
  public:
-  TiledSampler(const std::string& name, const std::string& method, const ImageSamplerOptions& o)
-      : ImageSampler(name, o.spp),
-        pattern_(generate_tile(method, o.tile_count, o.seed, o.params), o.spp, TiledPatternOptions{0, o.seed}) {}
+  TiledSampler(const std::string& name, PointSet<2> tile, const ImageSamplerOptions& o)
+      : ImageSampler(name, o.spp), pattern_(std::move(tile), o.spp, TiledPatternOptions{0, o.seed}) {}
   void samples_in(const PixelRect& r, std::vector<Point<2>>& out) const override { pattern_.samples_in(r, out); }
   const TiledPattern* tiled() const override { return &pattern_; }
 
@@ -140,12 +134,25 @@ class TiledSampler : public ImageSampler {
   TiledPattern pattern_;
 };
 
+void check_spp(int spp) {
+  if (spp < 1 || spp > kMaxSpp)
+    throw InvalidArgument("spp (samples per pixel) must be in [1, " + std::to_string(kMaxSpp) + "], got " +
+                          std::to_string(spp));
+}
+
 }  // namespace
 
+std::unique_ptr<ImageSampler> make_tiled_sampler(const std::string& name, PointSet<2> tile,
+                                                 const ImageSamplerOptions& options) {
+  check_spp(options.spp);
+  if (tile.size() > kMaxTileCount)
+    throw InvalidArgument("tile count must be in [1, " + std::to_string(kMaxTileCount) + "], got " +
+                          std::to_string(tile.size()));
+  return std::make_unique<TiledSampler>(name, std::move(tile), options);
+}
+
 std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const ImageSamplerOptions& options) {
-  if (options.spp < 1 || options.spp > kMaxSpp)
-    throw InvalidArgument("spp (samples per pixel) must be in [1, " + std::to_string(kMaxSpp) + "], got " +
-                          std::to_string(options.spp));
+  check_spp(options.spp);
   const bool per_pixel = name == "random" || name == "jittered" || name == "sobol-pixel";
   if (per_pixel && !options.params.empty())
     throw InvalidArgument("sampler " + name + " takes no method parameters (--param is for tiled samplers, got " +
@@ -158,7 +165,8 @@ std::unique_ptr<ImageSampler> make_image_sampler(const std::string& name, const 
   if (options.tile_count < 1 || options.tile_count > kMaxTileCount)
     throw InvalidArgument("tile count must be in [1, " + std::to_string(kMaxTileCount) + "], got " +
                           std::to_string(options.tile_count));
-  return std::make_unique<TiledSampler>(name, method, options);
+  return std::make_unique<TiledSampler>(name, generate_tile(method, options.tile_count, options.seed, options.params),
+                                        options);
 }
 
 }  // namespace pds

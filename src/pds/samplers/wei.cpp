@@ -415,7 +415,9 @@ class WeiSampler {
     std::vector<std::size_t> counts(chunk_first[groups] * windows, 0);
     auto over_chunks = [&](auto&& per_dart) {
       for (std::size_t g = 0; g < groups; ++g) {
-        const auto [begin, end] = unit_range(level, g);
+        // Plain variables: clang 14 cannot capture structured bindings.
+        const auto range = unit_range(level, g);
+        const std::size_t begin = range.first, end = range.second;
         parallel_for(0, chunk_first[g + 1] - chunk_first[g], 1, params_.threads, [&](std::size_t c, std::size_t) {
           std::size_t* row = &counts[(chunk_first[g] + c) * windows];
           const std::size_t first = begin + c * kChunk;
