@@ -23,8 +23,12 @@
 
 #include "pds/analysis/discrepancy.h"
 #include "pds/analysis/pair_correlation.h"
+#include "pds/analysis/report.h"
 #include "pds/analysis/spectrum.h"
 #include "pds/error.h"
+#ifdef PDS_WITH_JSON
+#include "pds/io/report_json.h"
+#endif
 #include "pds/point.h"
 #include "pds/registry.h"
 #ifdef PDS_WITH_RENDER
@@ -93,7 +97,7 @@ std::vector<pds::PointSet<D>> to_sets(const std::vector<InputArray>& sets) {
 py::array_t<double> generate(const std::string& method, std::optional<std::uint64_t> count,
                              std::optional<double> radius, int dim, std::vector<double> lo, std::vector<double> hi,
                              bool torus, std::uint64_t seed, int threads, std::uint64_t max_points,
-                             std::map<std::string, double> params) {
+                             std::map<std::string, double> params, bool sized) {
   pds::GenerateRequest request;
   request.dim = dim;
   request.lo = std::move(lo);
@@ -108,7 +112,9 @@ py::array_t<double> generate(const std::string& method, std::optional<std::uint6
   pds::PointCloud cloud;
   {
     py::gil_scoped_release unlocked;
-    cloud = pds::generate(method, request);
+    // sized: a count asked of a radius-only method becomes a radius by the
+    // registry's one policy (pds::size_request), as `pds tile` does.
+    cloud = pds::generate(method, sized ? pds::size_request(pds::find_method(method), request) : request);
   }
   const auto n = static_cast<py::ssize_t>(cloud.size());
   return adopt(std::move(cloud.coords), {n, cloud.dim});
@@ -194,6 +200,28 @@ double discrepancy(const InputArray& array, const std::vector<double>& lo, const
   });
 }
 
+#ifdef PDS_WITH_JSON
+/// The analysis report as the JSON `pds analyze` prints (the Python side
+/// parses it), so the keys, their order and their values are the CLI's.
+std::string analyze_json(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
+                         const std::vector<double>& hi, bool torus, std::optional<double> radius, int max_frequency,
+                         bool spectrum, double pcf_r_max, double pcf_bandwidth) {
+  if (max_frequency < 0) throw pds::InvalidArgument("max_frequency must be positive");
+  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const auto sets = to_sets<D>(arrays);
+    const auto domain = make_domain<D>(lo, hi, torus);
+    py::gil_scoped_release unlocked;
+    const pds::AnalysisReport report = pds::analyze<D>(sets, domain,
+                                                       {.radius = radius,
+                                                        .max_frequency = max_frequency,
+                                                        .spectrum = spectrum,
+                                                        .pcf = {.r_max = pcf_r_max, .bandwidth = pcf_bandwidth}});
+    return pds::analysis_report_json(report);
+  });
+}
+#endif
+
 #ifdef PDS_WITH_RENDER
 py::array_t<double> render(const std::string& scene_name, const std::string& sampler_name, int width, int height,
                            int spp, const std::string& filter, std::uint64_t seed, std::uint64_t tile_count,
@@ -220,7 +248,8 @@ py::array_t<double> render(const std::string& scene_name, const std::string& sam
 PYBIND11_MODULE(_pds, m) {
   m.doc() = "The compiled half of the pds package; use the functions of `pds` itself.";
   m.def("generate", &generate, py::arg("method"), py::arg("count"), py::arg("radius"), py::arg("dim"), py::arg("lo"),
-        py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"), py::arg("params"));
+        py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"), py::arg("params"),
+        py::arg("sized"));
   m.def("methods", &methods);
   m.def("periodogram", &periodogram, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
         py::arg("max_frequency"));
@@ -229,6 +258,14 @@ PYBIND11_MODULE(_pds, m) {
   m.def("pair_correlation", &pair_correlation, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
         py::arg("r_max"), py::arg("bandwidth"), py::arg("steps"));
   m.def("discrepancy", &discrepancy, py::arg("points"), py::arg("lo"), py::arg("hi"), py::arg("kind"));
+#ifdef PDS_WITH_JSON
+  m.def("analyze_json", &analyze_json, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
+        py::arg("radius"), py::arg("max_frequency"), py::arg("spectrum"), py::arg("pcf_r_max"),
+        py::arg("pcf_bandwidth"));
+  m.attr("has_analyze") = true;
+#else
+  m.attr("has_analyze") = false;
+#endif
 #ifdef PDS_WITH_RENDER
   m.def("render", &render, py::arg("scene"), py::arg("sampler"), py::arg("width"), py::arg("height"), py::arg("spp"),
         py::arg("filter"), py::arg("seed"), py::arg("tile_count"), py::arg("threads"), py::arg("params"));

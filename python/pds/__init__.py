@@ -24,6 +24,8 @@ Conventions, the same as the command line's:
 
 from __future__ import annotations
 
+import json as _json
+
 import numpy as _np
 
 from . import _pds
@@ -32,6 +34,7 @@ __all__ = [
     "generate",
     "tile",
     "methods",
+    "analyze",
     "periodogram",
     "radial_power",
     "pair_correlation",
@@ -113,6 +116,10 @@ def generate(
     results never depend on the thread count. Raises ValueError for bad
     input, with the command line's message.
     """
+    return _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, False)
+
+
+def _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, sized):
     if not isinstance(method, str):
         raise TypeError(f"method must be a str, got {type(method).__name__}")
     lo, hi = _bounds(bounds, dim)
@@ -128,6 +135,7 @@ def generate(
         int(threads),
         _uint(max_points, "max_points"),
         _params(method, params),
+        sized,
     )
 
 
@@ -144,9 +152,12 @@ def tile(
     """A tileable pattern: ``method`` on the unit torus (``pds tile``).
 
     Its minimum distance holds across the seams, so copies of it cover the
-    plane (or space) without closer pairs. Same arguments as :func:`generate`.
+    plane (or space) without closer pairs. Same arguments as :func:`generate`;
+    as ``pds tile`` (and the tiled render samplers), a ``count`` asked of a
+    method that takes only a radius becomes the radius at which that many
+    points have relative radius 0.75 (the registry's sizing policy).
     """
-    return generate(method, count=count, radius=radius, dim=dim, torus=True, seed=seed, threads=threads, **params)
+    return _generate(method, count, radius, dim, None, True, seed, threads, MAX_POINTS, params, True)
 
 
 def methods() -> list[dict]:
@@ -174,6 +185,51 @@ def _sets(points):
 def _dim(sets):
     a = sets[0] if sets else None
     return _np.shape(a)[1] if a is not None and _np.ndim(a) == 2 else 2
+
+
+def analyze(
+    points,
+    *,
+    bounds=None,
+    torus: bool = False,
+    radius: float | None = None,
+    max_frequency: int = 0,
+    spectrum: bool = False,
+    pcf_r_max: float = 0.0,
+    pcf_bandwidth: float = 0.0,
+) -> dict:
+    """The measures of ``pds analyze``, as the dict of its JSON output.
+
+    ``points``: an (N, D) array, or a list of them (realisations: the
+    first-set fields describe the first, spacing and discrepancy are means,
+    the spectrum and pair correlation averages). Keys, in the command line's
+    order: ``count``, ``dim``, ``domain``, ``min_distance`` (and
+    ``min_distance_pair``), ``mean_nn_distance``, ``relative_radius``,
+    ``max_packing_radius``; with ``radius``, also ``radius``,
+    ``min_distance_holds``, ``maximal`` and ``maximality``; then ``sets``,
+    ``rho_min``, ``rho_mean``, the discrepancies, ``spectrum`` and ``pcf``
+    summaries (docs/verification.md, docs/analysis.md). Measures that do not
+    exist are None. ``max_frequency`` (0: 128 in 2D, 32 in 3D) and
+    ``spectrum=True`` (compute it whatever it costs) are ``--frequencies``
+    and ``--spectrum``; ``pcf_r_max`` and ``pcf_bandwidth`` are ``--pcf-max``
+    and ``--pcf-bandwidth``.
+    """
+    if not _pds.has_analyze:
+        raise RuntimeError("pds was built without its json component (PDS_WITH_JSON=OFF)")
+    sets = _sets(points)
+    lo, hi = _bounds(bounds, _dim(sets))
+    text = _pds.analyze_json(
+        sets,
+        lo,
+        hi,
+        bool(torus),
+        None if radius is None else float(radius),
+        int(max_frequency),
+        bool(spectrum),
+        float(pcf_r_max),
+        float(pcf_bandwidth),
+    )
+    return _json.loads(text)
 
 
 def periodogram(points, *, bounds=None, torus: bool = False, max_frequency: int = 128) -> _np.ndarray:

@@ -34,6 +34,17 @@ def tile(
     **params: float,
 ) -> npt.NDArray[np.float64]: ...
 def methods() -> list[dict[str, Any]]: ...
+def analyze(
+    points: _Points,
+    *,
+    bounds: _Bounds = ...,
+    torus: bool = ...,
+    radius: float | None = ...,
+    max_frequency: int = ...,
+    spectrum: bool = ...,
+    pcf_r_max: float = ...,
+    pcf_bandwidth: float = ...,
+) -> dict[str, Any]: ...
 def periodogram(
     points: _Points, *, bounds: _Bounds = ..., torus: bool = ..., max_frequency: int = ...
 ) -> npt.NDArray[np.float64]: ...

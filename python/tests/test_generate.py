@@ -84,6 +84,7 @@ def test_array_owns_the_library_buffer():
 
 
 def test_tile_is_on_the_unit_torus(cli, tmp_path):
+    # best-candidate takes a count: the same request as pds generate --torus.
     t = pds.tile("best-candidate", count=256, seed=2)
     assert t.tobytes() == cli_points(cli, tmp_path, "best-candidate", 2, {"count": 256}, True, 2).tobytes()
 
@@ -139,3 +140,11 @@ def test_python_side_errors():
         pds.generate("random", count=1.5)
     with pytest.raises(ValueError, match="must be a number"):
         pds.generate("bridson", radius=0.1, k="many")
+
+
+def test_tile_sizes_counts_as_the_cli(cli, tmp_path):
+    out = tmp_path / "tile.npy"
+    subprocess.run([cli, "tile", "dunbar-humphreys", "--count", "500", "--seed", "3", "-o", str(out)], check=True, capture_output=True)
+    ours = pds.tile("dunbar-humphreys", count=500, seed=3)
+    assert ours.tobytes() == np.load(out).tobytes()
+    assert 450 < len(ours) < 800  # "about the count or somewhat more" (pds::size_request)
