@@ -323,13 +323,13 @@ def render(
 
 
 def _methods_text():
-    lines = ["", "Methods:"]
+    lines = ["", "    Methods:"]
     for m in _METHODS:
         sizing = " or ".join(s for s, on in (("count", m["takes_count"]), ("radius", m["takes_radius"])) if on)
-        lines.append(f"  {m['name']:<18}{m['summary']}")
-        lines.append(f"  {'':<18}takes {sizing}; dims {', '.join(map(str, m['dims']))}")
+        lines.append(f"      {m['name']:<18}{m['summary']}")
+        lines.append(f"      {'':<18}takes {sizing}; dims {', '.join(map(str, m['dims']))}")
         for p in m["params"]:
-            lines.append(f"  {'':<18}{p['name'].replace('-', '_')}={p['default']:g}  {p['help']}")
+            lines.append(f"      {'':<18}{p['name'].replace('-', '_')}={p['default']:g}  {p['help']}")
     return "\n".join(lines)
 
 
