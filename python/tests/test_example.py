@@ -12,6 +12,7 @@ SOURCE = pathlib.Path(os.environ.get("PDS_SOURCE_DIR", pathlib.Path(__file__).pa
 
 @pytest.mark.parametrize("script", sorted((SOURCE / "examples" / "python").glob("*.py")), ids=lambda p: p.name)
 def test_example_runs(tmp_path, script):
+    pytest.importorskip("matplotlib")
     out = tmp_path / "out.png"
     env = dict(os.environ, MPLBACKEND="Agg")
     done = subprocess.run([sys.executable, str(script), str(out)], env=env, capture_output=True, text=True, timeout=120)

@@ -4,7 +4,8 @@ import subprocess
 
 import numpy as np
 import pytest
-from scipy.spatial import cKDTree
+
+cKDTree = pytest.importorskip("scipy.spatial").cKDTree
 
 import pds
 

@@ -2,8 +2,9 @@
 
 import numpy as np
 import pytest
-from scipy.spatial import cKDTree
-from scipy.stats import qmc as scipy_qmc
+
+cKDTree = pytest.importorskip("scipy.spatial").cKDTree
+scipy_qmc = pytest.importorskip("scipy.stats.qmc")
 
 import pds
 from pds import qmc
