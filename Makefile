@@ -1,5 +1,6 @@
 # The two set-up commands of the README:
-#   make demo   install dependencies, build (Release), run the showcase job
+#   make demo   install dependencies, build (Release), install the Python module
+#               for /usr/bin/python3, run the showcase job
 #   make test   install dependencies, build, run every test
 MAKEFLAGS += --no-print-directory
 SHELL = /bin/bash
@@ -23,7 +24,10 @@ build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(LAUNCHER) >/dev/null
 	@cmake --build $(BUILD) -j $(JOBS)
 
+# The Python module goes where Debian's /usr/bin/python3 finds it
+# (/usr/local/lib/python3.X/dist-packages; docs/python.md).
 demo: build
+	@cmake --install $(BUILD) --component python >/dev/null
 	@bash scripts/demo.sh $(PDS) $(DEMO_DIR)
 
 test: build
