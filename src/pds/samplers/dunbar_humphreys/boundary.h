@@ -13,11 +13,14 @@
 #include "pds/samplers/dunbar_humphreys.h"
 
 // The AVX-512 kernel needs x86-64 and GCC 12 or later (its target attribute
-// "arch=x86-64-v4" and __builtin_cpu_supports("x86-64-v4")).
+// "arch=x86-64-v4" and __builtin_cpu_supports("x86-64-v4")). Building with
+// -DPDS_HAVE_AVX512_KERNEL=0 leaves it out (to test a build without it).
+#ifndef PDS_HAVE_AVX512_KERNEL
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
 #define PDS_HAVE_AVX512_KERNEL 1
 #else
 #define PDS_HAVE_AVX512_KERNEL 0
+#endif
 #endif
 
 namespace pds::detail::dh {
