@@ -13,10 +13,10 @@
 //   boundary_avx512.cpp       ... and with the AVX-512 kernel (x86-64-v4)
 //   kernel_select.h/.cpp      the run-time choice; PDS_FORCE_SCALAR=1
 //
-// Variant 0, the paper's boundary sampling (section 4): new samples on the
+// Variant 0, the paper's boundary sampling: new samples on the
 // circle of radius r around a front sample, uniformly over the arcs no other
 // disk covers, until none is left. Fastest; 25% denser than dart throwing.
-// Variant 1, the paper's scalloped sectors (section 3): new samples uniform
+// Variant 1, the paper's scalloped sectors: new samples uniform
 // over the free part of the annulus r..2r of a random front sample, until it
 // is empty; 5% denser than dart throwing. Variant 2: the same sectors, each new
 // sample uniform over all free annuli at once: dart throwing's statistics,

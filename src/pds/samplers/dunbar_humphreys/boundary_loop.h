@@ -1,6 +1,6 @@
 #pragma once
 // Boundary sampling (D. Dunbar and G. Humphreys, "A spatial data structure for
-// fast Poisson-disk sample generation", ACM SIGGRAPH 2006, section 4): the
+// fast Poisson-disk sample generation", ACM SIGGRAPH 2006; its boundary sampling): the
 // loop over the front and the scalar neighbourhood kernel, written once as
 // templates over the kernel and instantiated by each kernel's translation unit
 // (boundary_scalar.cpp, boundary_avx512.cpp). Private to those two files.

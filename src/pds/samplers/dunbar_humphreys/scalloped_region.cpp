@@ -1,5 +1,5 @@
 // Scalloped regions (D. Dunbar and G. Humphreys, "A spatial data structure for
-// fast Poisson-disk sample generation", ACM SIGGRAPH 2006, section 3): exact
+// fast Poisson-disk sample generation", ACM SIGGRAPH 2006; its scalloped sectors): exact
 // areas and sampling by inverse CDF; the declarations say what each does.
 //
 // A sector's area is the integral of rho(t)^2 / 2 between its two curves,
@@ -42,32 +42,6 @@ Curve Curve::wall(double h, double psi) {
   c.h = h;
   c.psi = psi;
   return c;
-}
-
-double Curve::radius(double theta) const {
-  if (line) return h / std::cos(theta - psi);
-  if (d == 0.0) return rho;
-  const double u = theta - phi, s = d * std::sin(u);
-  return d * std::cos(u) + branch * std::sqrt(std::max(0.0, rho * rho - s * s));
-}
-
-double Curve::primitive(double theta) const {
-  if (line) return 0.5 * h * h * std::tan(wrap_angle(theta - psi));
-  if (d == 0.0) return 0.5 * rho * rho * theta;
-  // r^2 = rho^2 + d^2 cos 2u + 2 branch d cos u sqrt(rho^2 - d^2 sin^2 u);
-  // with w = d sin u the last term integrates to w sqrt(rho^2 - w^2) + rho^2 asin(w / rho).
-  const double u = wrap_angle(theta - phi), w = d * std::sin(u);
-  const double root = std::sqrt(std::max(0.0, rho * rho - w * w));
-  const double arc = std::asin(std::clamp(w / rho, -1.0, 1.0));
-  return 0.5 * (rho * rho * u + 0.5 * d * d * std::sin(2.0 * u) + branch * (w * root + rho * rho * arc));
-}
-
-// Neighbour circles and walls span less than pi around their direction, so
-// the primitive is continuous inside a sector.
-double Curve::wrap_angle(double u) {
-  if (u > std::numbers::pi) return u - kTwoPi;
-  if (u <= -std::numbers::pi) return u + kTwoPi;
-  return u;
 }
 
 void crossings(const Curve& a, const Curve& b, std::vector<double>& out) {

@@ -1,11 +1,15 @@
 #pragma once
-// Scalloped regions (Dunbar & Humphreys 2006, section 3): the part of the
-// annulus r..2r around a sample where a new sample may still go, kept in
+// Scalloped regions, the data structure of Dunbar & Humphreys 2006 ("A
+// spatial data structure for fast Poisson-disk sample generation"): the part
+// of the annulus r..2r around a sample where a new sample may still go, kept in
 // polar coordinates around the sample as scalloped sectors with exact areas,
 // and sampled uniformly by inverting their cumulative area. Used by variants
 // 1 and 2 of the Dunbar-Humphreys sampler; private to the library (tested in
 // scalloped_region_test.cpp).
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -28,16 +32,35 @@ struct Curve {
   static Curve wall(double h, double psi);
 
   /// Where the ray at angle theta meets the curve (theta where it does).
-  double radius(double theta) const;
+  double radius(double theta) const {
+    if (line) return h / std::cos(theta - psi);
+    if (d == 0.0) return rho;
+    const double u = theta - phi, s = d * std::sin(u);
+    return d * std::cos(u) + branch * std::sqrt(std::max(0.0, rho * rho - s * s));
+  }
   /// An antiderivative of radius(theta)^2 / 2 (the area swept by the ray),
   /// continuous over any angular range where the curve is defined and that
   /// stays within pi of the circle's direction phi (the wall's normal psi).
   /// Closed form: for a circle of radius a at distance d, with u = theta -
   /// phi and w = d sin u, (a^2 u + d^2 sin(2u) / 2 + branch (w sqrt(a^2 -
   /// w^2) + a^2 asin(w / a))) / 2; for a wall, h^2 tan(theta - psi) / 2.
-  double primitive(double theta) const;
-  /// u wrapped into (-pi, pi].
-  static double wrap_angle(double u);
+  double primitive(double theta) const {
+    if (line) return 0.5 * h * h * std::tan(wrap_angle(theta - psi));
+    if (d == 0.0) return 0.5 * rho * rho * theta;
+    // r^2 = rho^2 + d^2 cos 2u + 2 branch d cos u sqrt(rho^2 - d^2 sin^2 u);
+    // with w = d sin u the last term integrates to w sqrt(rho^2 - w^2) + rho^2 asin(w / rho).
+    const double u = wrap_angle(theta - phi), w = d * std::sin(u);
+    const double root = std::sqrt(std::max(0.0, rho * rho - w * w));
+    const double arc = std::asin(std::clamp(w / rho, -1.0, 1.0));
+    return 0.5 * (rho * rho * u + 0.5 * d * d * std::sin(2.0 * u) + branch * (w * root + rho * rho * arc));
+  }
+  /// u wrapped into (-pi, pi]: neighbour circles and walls span less than pi
+  /// around their direction, so the primitive is continuous inside a sector.
+  static double wrap_angle(double u) {
+    if (u > std::numbers::pi) return u - 2.0 * std::numbers::pi;
+    if (u <= -std::numbers::pi) return u + 2.0 * std::numbers::pi;
+    return u;
+  }
 };
 
 /// Appends the angles in [0, 2 pi) of the points where the geometric

@@ -1,4 +1,4 @@
-// Scalloped regions (Dunbar & Humphreys 2006, section 3) against an
+// Scalloped regions (the data structure of Dunbar & Humphreys 2006) against an
 // independent oracle: along each ray from the sample, the free radii are the
 // interval r..2r minus the chord of every neighbour's disk and minus what lies
 // beyond each wall, found by elementary ray-circle and ray-line geometry; the

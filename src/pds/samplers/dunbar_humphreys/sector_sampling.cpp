@@ -1,6 +1,6 @@
 // Variants 1 and 2 of the Dunbar-Humphreys sampler (D. Dunbar and G.
 // Humphreys, "A spatial data structure for fast Poisson-disk sample
-// generation", ACM SIGGRAPH 2006, section 3): the available region of a front
+// generation", ACM SIGGRAPH 2006; its scalloped sectors): the available region of a front
 // sample p is the annulus r..2r around it minus the disks of radius r around
 // the samples within 3r (and minus the outside of a box), kept as scalloped
 // sectors (scalloped_region.h).
