@@ -54,7 +54,7 @@ std::string vector_kernel_missing() {
   if (!__builtin_cpu_supports("avx512vl")) missing += " no avx512vl";
   return missing;
 #else
-  return "this build has no AVX-512 kernel (it needs x86-64 and GCC 12 or later)";
+  return "this build has no AVX-512 kernel (it needs x86-64 and GCC 12 or later, without -DPDS_HAVE_AVX512_KERNEL=0)";
 #endif
 }
 
