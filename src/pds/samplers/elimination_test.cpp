@@ -109,7 +109,7 @@ TEST(Elimination, ProgressiveOrderIsAPermutationOfTheKeptSet) {
 // Seeded: the relative radius of the output and of its prefixes. The
 // paper's algorithm from 5N white-noise candidates gives 0.692-0.696 at 4096
 // points in 2D (seeds 1-5; the same set as cySampleElim.h), 0.738-0.741 from
-// 10N; the prefixes of the progressive order 0.60-0.65 (10%) and 0.625-0.632
+// 10N; the prefixes of the progressive order 0.619-0.632 (10%) and 0.625-0.632
 // (50%); 3D from 5N 0.680-0.682 (docs/elimination.md).
 TEST(Elimination, RelativeRadiusOfTheSetAndOfItsPrefixes) {
   const auto domain = Domain<2>::unit(true);
