@@ -10,6 +10,8 @@ packages=(
   libcairo2-dev libpng-dev fonts-dejavu-core   # pictures (Cairo draws text with a system font)
   libfftw3-dev libgsl-dev                      # spectra, quasi-random sequences
   libcgal-dev                                  # Delaunay/Voronoi (the cgal component)
+  pybind11-dev python3-dev python3-numpy       # the Python module (for Debian's /usr/bin/python3)
+  python3-scipy python3-pytest python3-matplotlib  # its tests, the SciPy drop-in's reference, the example
 )
 
 missing=()

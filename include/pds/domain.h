@@ -7,6 +7,7 @@
 #include <ostream>
 #include <string>
 
+#include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/point.h"
 
@@ -77,20 +78,29 @@ struct Domain {
     return p;
   }
 
-  /// Throws InvalidArgument unless every bound is finite and hi > lo.
+  /// Throws InvalidArgument unless every bound is finite, hi > lo, and every
+  /// extent lies in [1e-150, 1e150], the range of radii (limits.h): squared
+  /// distances across the domain then stay normal doubles, and a width of a
+  /// few denormals (which no grid can divide) or one that overflows to
+  /// infinity is refused here rather than deep inside a sampler.
   void validate() const {
     for (int i = 0; i < D; ++i) {
       if (!std::isfinite(lo[i]) || !std::isfinite(hi[i]))
         throw InvalidArgument("bounds: axis " + std::to_string(i) + " has a non-finite bound");
       if (!(hi[i] > lo[i]))
-        throw InvalidArgument("bounds: axis " + std::to_string(i) + " is empty (lo " + std::to_string(lo[i]) +
-                              " >= hi " + std::to_string(hi[i]) + ")");
+        throw InvalidArgument("bounds: axis " + std::to_string(i) + " is empty (lo " + format(lo[i]) + " >= hi " +
+                              format(hi[i]) + ")");
+      const double extent = hi[i] - lo[i];
+      if (!(extent >= 1e-150 && extent <= 1e150))
+        throw InvalidArgument("bounds: axis " + std::to_string(i) + " has extent " + format(extent) +
+                              ", outside [1e-150, 1e150] (scale the domain)");
     }
   }
 
   bool operator==(const Domain&) const = default;
 
  private:
+  static std::string format(double v) { return detail::format_number(v); }
   static Point<D> filled(double v) {
     Point<D> p;
     p.fill(v);

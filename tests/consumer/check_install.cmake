@@ -31,7 +31,7 @@ if(MODE STREQUAL "shared-full")
 elseif(MODE STREQUAL "static-core")
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/pds -DCMAKE_BUILD_TYPE=Release ${launcher}
       -DBUILD_SHARED_LIBS=OFF -DPDS_WITH_CGAL=OFF -DPDS_WITH_PLOT=OFF -DPDS_WITH_RENDER=OFF
-      -DPDS_BUILD_APPS=OFF -DPDS_BUILD_TESTS=OFF -DPDS_BUILD_BENCH=OFF)
+      -DPDS_BUILD_APPS=OFF -DPDS_BUILD_TESTS=OFF -DPDS_BUILD_BENCH=OFF -DPDS_BUILD_PYTHON=OFF)
   run(${CMAKE_COMMAND} --build ${WORK_DIR}/pds -j ${jobs})
   run(${CMAKE_COMMAND} --install ${WORK_DIR}/pds --prefix ${prefix})
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer/core -B ${WORK_DIR}/build

@@ -105,7 +105,9 @@ void validate(const Method& m, const GenerateRequest& r) {
     throw InvalidArgument(m.name + (m.takes_count ? " needs --count" : " needs --radius"));
   }
   if (r.threads < 0) throw InvalidArgument("threads must be 0 (all) or positive, got " + std::to_string(r.threads));
-  for (const auto& [name, value] : r.params) {
+  for (const auto& entry : r.params) {
+    const std::string& name = entry.first;
+    const double value = entry.second;
     const auto it =
         std::find_if(m.params.begin(), m.params.end(), [&](const MethodParam& p) { return p.name == name; });
     if (it == m.params.end()) {

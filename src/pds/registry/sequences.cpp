@@ -29,32 +29,46 @@ MethodParam first_param() {
           .help = "index of the first point: --count points from here continue an earlier run"};
 }
 
+/// The entry of a sequence that takes `first` and `scramble` (Halton, Sobol):
+/// every field but its name, summary and paper is the same.
+template <class Params>
+Method sequence_method(std::string name, std::string summary, std::string citation,
+                       PointCloud (*run)(const GenerateRequest&)) {
+  return Method{.name = std::move(name),
+                .family = Family::sequence,
+                .docs = "docs/low-discrepancy.md",
+                .summary = std::move(summary),
+                .citation = std::move(citation),
+                .takes_count = true,
+                .exact_count = true,
+                .progressive = true,
+                .deterministic = true,
+                .params = {scramble_param(), first_param()},
+                .run = run};
+}
+
+/// Params{count, first, scramble} from the request, for `sample`.
+template <class Params, class Sample>
+PointCloud run_sequence(const GenerateRequest& r, const char* name, Sample sample) {
+  return run_typed(r, [&](const auto& domain) {
+    const Params params{.count = *r.count,
+                        .first = static_cast<std::uint64_t>(r.param("first", 0)),
+                        .scramble = scramble_from(name, static_cast<int>(r.param("scramble", 0)))};
+    return sample(params, domain, r.seed);
+  });
+}
+
 }  // namespace
 
 const Method& halton_method() {
-  static const Method method{
-      .name = "halton",
-      .family = Family::sequence,
-      .docs = "docs/low-discrepancy.md",
-      .summary = "Halton sequence (radical inverses in bases 2, 3, 5), optionally scrambled",
-      .citation =
-          "J. H. Halton, On the efficiency of certain quasi-random sequences of points in evaluating "
-          "multi-dimensional integrals, Numerische Mathematik 2, 1960",
-      .takes_count = true,
-      .exact_count = true,
-      .progressive = true,
-      .deterministic = true,
-      .params = {scramble_param(), first_param()},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const HaltonParams params{.count = *r.count,
-                                        .first = static_cast<std::uint64_t>(r.param("first", 0)),
-                                        .scramble = scramble_from("halton", static_cast<int>(r.param("scramble", 0)))};
-              return halton(params, domain, r.seed);
-            });
-          },
-  };
+  static const Method method = sequence_method<HaltonParams>(
+      "halton", "Halton sequence (radical inverses in bases 2, 3, 5), optionally scrambled",
+      "J. H. Halton, On the efficiency of certain quasi-random sequences of points in evaluating "
+      "multi-dimensional integrals, Numerische Mathematik 2, 1960",
+      [](const GenerateRequest& r) {
+        return run_sequence<HaltonParams>(
+            r, "halton", [](const auto& p, const auto& d, std::uint64_t seed) { return halton(p, d, seed); });
+      });
   return method;
 }
 
@@ -94,29 +108,14 @@ const Method& hammersley_method() {
 }
 
 const Method& sobol_method() {
-  static const Method method{
-      .name = "sobol",
-      .family = Family::sequence,
-      .docs = "docs/low-discrepancy.md",
-      .summary = "Sobol sequence (Joe-Kuo direction numbers, Gray-code order), optionally Owen-scrambled",
-      .citation =
-          "I. M. Sobol, On the distribution of points in a cube and the approximate evaluation of integrals, "
-          "USSR Comput. Math. Math. Phys. 7(4), 1967; S. Joe and F. Y. Kuo, SIAM J. Sci. Comput. 30(5), 2008",
-      .takes_count = true,
-      .exact_count = true,
-      .progressive = true,
-      .deterministic = true,
-      .params = {scramble_param(), first_param()},
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const SobolParams params{.count = *r.count,
-                                       .first = static_cast<std::uint64_t>(r.param("first", 0)),
-                                       .scramble = scramble_from("sobol", static_cast<int>(r.param("scramble", 0)))};
-              return sobol(params, domain, r.seed);
-            });
-          },
-  };
+  static const Method method = sequence_method<SobolParams>(
+      "sobol", "Sobol sequence (Joe-Kuo direction numbers, Gray-code order), optionally Owen-scrambled",
+      "I. M. Sobol, On the distribution of points in a cube and the approximate evaluation of integrals, "
+      "USSR Comput. Math. Math. Phys. 7(4), 1967; S. Joe and F. Y. Kuo, SIAM J. Sci. Comput. 30(5), 2008",
+      [](const GenerateRequest& r) {
+        return run_sequence<SobolParams>(
+            r, "sobol", [](const auto& p, const auto& d, std::uint64_t seed) { return sobol(p, d, seed); });
+      });
   return method;
 }
 

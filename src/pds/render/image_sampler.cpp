@@ -83,7 +83,7 @@ class JitteredSampler : public ImageSampler {
       : ImageSampler("jittered", spp), seed_(seed), strata_(pixel_strata(spp)) {}
   void samples_in(const PixelRect& r, std::vector<Point<2>>& out) const override {
     check_rect(r);
-    const auto [a, b] = strata_;
+    const int a = strata_[0], b = strata_[1];  // not a structured binding: clang 14 cannot capture one
     for_each_pixel(r, [&](std::int64_t px, std::int64_t py) {
       Rng rng(seed_, {static_cast<std::uint64_t>(px), static_cast<std::uint64_t>(py)});
       for (int j = 0; j < b; ++j)

@@ -79,7 +79,7 @@ class BridsonGrid {
     // up this is at most 3 for D <= 3.
     reach_ = 1;
     for (int i = 0; i < D; ++i)
-      reach_ = std::max(reach_, std::min(static_cast<int>(std::floor(radius * inv_edge_[i])) + 1, cells_[i]));
+      reach_ = std::max(reach_, static_cast<int>(std::min(std::floor(radius * inv_edge_[i]) + 1.0, double(cells_[i]))));
     if (reach_ > kMaxReach)
       throw InvalidArgument("bridson: dimension " + std::to_string(D) + " needs a wider neighbourhood than supported");
     // A cell is interior when its neighbourhood (reach cells each way) lies

@@ -3,14 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
-#include <numbers>
 
 #include "nn_statistics.h"
 #include "pds/analysis/distance.h"
 #include "pds/analysis/maximality.h"
 #include "pds/error.h"
-#include "pds/rng.h"
 #include "pds/samplers/jones.h"
 #include "set_checks.h"
 
@@ -54,50 +51,6 @@ TEST(DunbarHumphreys, SmallToriStayExactAndMaximal) {
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
       const auto points = dunbar_humphreys({r}, domain, seed);
       EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, r)) << "seed " << seed;
-    }
-  }
-}
-
-// The kernels' blocked arcs and complements agree bit for bit for any number
-// of neighbours, up to the 32 a circle can have with walls: real
-// neighbourhoods stay under 16, where the AVX-512 kernel takes its two-vector
-// path, so only this reaches its longer block and its complement fallback.
-TEST(DunbarHumphreys, KernelsFreeArcsAgreeForAnyNeighbourCount) {
-  if (!detail::dunbar_humphreys_has_vector_kernel()) GTEST_SKIP() << "no AVX-512 (x86-64-v4) here";
-  Rng rng(8);
-  const double r = 0.01;
-  const Point<2> p{{0.3, 0.6}};
-  int nonempty = 0;
-  for (int trial = 0; trial < 4000; ++trial) {
-    const int n = 1 + trial % 32;
-    PointSet<2> neighbours;
-    for (int k = 0; k < n; ++k) {
-      const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi), d = rng.uniform(r, 2.0 * r);
-      neighbours.push_back({{p[0] + d * std::cos(angle), p[1] + d * std::sin(angle)}});
-    }
-    const auto scalar = detail::dunbar_humphreys_free_arcs(p, neighbours, r, false);
-    ASSERT_EQ(scalar, detail::dunbar_humphreys_free_arcs(p, neighbours, r, true))
-        << "trial " << trial << ", " << n << " neighbours";
-    nonempty += n > 16 && !scalar.empty();
-  }
-  EXPECT_GT(nonempty, 50);  // the long paths also produced free arcs, not only empty circles
-}
-
-// The AVX-512 neighbourhood kernel and the scalar one make the same points,
-// bit for bit (same seed, same bytes on every processor), in boxes and on
-// tori, large and small, near walls and seams.
-TEST(DunbarHumphreys, VectorKernelMatchesScalarKernelBitForBit) {
-  if (!detail::dunbar_humphreys_has_vector_kernel()) GTEST_SKIP() << "no AVX-512 (x86-64-v4) here";
-  for (bool torus : {false, true}) {
-    const Domain<2> domain{{{0.1, -0.2}}, {{1.4, 0.9}}, torus};
-    for (double r : {0.004, 0.02, 0.13}) {
-      for (std::uint64_t seed = 1; seed <= 3; ++seed) {
-        const auto scalar = detail::dunbar_humphreys_boundary({r}, domain, seed, false);
-        const auto vector = detail::dunbar_humphreys_boundary({r}, domain, seed, true);
-        ASSERT_EQ(scalar.size(), vector.size()) << domain << " r " << r << " seed " << seed;
-        EXPECT_EQ(std::memcmp(scalar.data(), vector.data(), scalar.size() * sizeof(scalar[0])), 0)
-            << domain << " r " << r << " seed " << seed;
-      }
     }
   }
 }

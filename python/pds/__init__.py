@@ -1,0 +1,339 @@
+"""pds: Poisson disk and blue-noise sampling, NumPy arrays in and out.
+
+The Python face of the pds C++ library (docs/python.md). Every sampling
+method of the library is reachable by name through :func:`generate`; the
+measures of ``pds analyze`` are :func:`periodogram`, :func:`radial_power`,
+:func:`pair_correlation` and :func:`discrepancy`; :mod:`pds.qmc` holds
+``PoissonDisk``, a drop-in for ``scipy.stats.qmc.PoissonDisk``.
+
+Conventions, the same as the command line's:
+
+- ``radius`` is the minimum distance between any two samples (Bridson's and
+  SciPy's convention), not the radius of disks drawn around them.
+- The domain is the unit square (cube for ``dim=3``) unless ``bounds`` gives
+  the lower corner then the upper one (``[x0, y0, x1, y1]`` or
+  ``[[x0, y0], [x1, y1]]``); ``torus=True`` makes it periodic. Every point
+  satisfies lo <= x < hi.
+- The seed defaults to 0, never to the clock: the same call gives the same
+  bytes, and the same bytes as ``pds generate`` with the same options.
+- Bad input raises ``ValueError`` with the message the command line prints
+  after ``pds: error:``; a failure while doing valid work raises
+  ``RuntimeError``.
+- The GIL is released while the library works, so threads run in parallel.
+"""
+
+from __future__ import annotations
+
+import json as _json
+
+import numpy as _np
+
+from . import _pds
+
+__all__ = [
+    "generate",
+    "tile",
+    "methods",
+    "analyze",
+    "periodogram",
+    "radial_power",
+    "pair_correlation",
+    "discrepancy",
+    "render",
+    "MAX_POINTS",
+    "qmc",
+]
+
+#: Requests that could produce more points than this are refused before any
+#: memory is committed (``max_points=`` raises or lowers it per call).
+MAX_POINTS: int = _pds.max_points_default
+
+# The registry, read once: it does not change while the process runs.
+_METHODS = tuple(_pds.methods())
+_PARAM_NAMES = {m["name"]: frozenset(p["name"] for p in m["params"]) for m in _METHODS}
+_U64 = 1 << 64
+
+
+def _bounds(bounds, dim):
+    """(lo, hi) lists for the library; empty lists mean the unit square/cube."""
+    if bounds is None:
+        return [], []
+    flat = _np.asarray(bounds, dtype=float).reshape(-1)
+    if flat.size != 2 * dim:
+        raise ValueError(
+            f"bounds needs {2 * dim} values for dimension {dim} (lo corner then hi corner), got {flat.size}"
+        )
+    return flat[:dim].tolist(), flat[dim:].tolist()
+
+
+def _params(method, params):
+    """Method parameters by their registry names: Python keywords spell
+    a hyphen as an underscore (``all_pairs=1`` for ``all-pairs``)."""
+    if not params:
+        return {}
+    known = _PARAM_NAMES.get(method, frozenset())
+    out = {}
+    for name, value in params.items():
+        key = name if name in known else name.replace("_", "-")
+        try:
+            out[key] = float(value)
+        except (TypeError, ValueError):
+            raise ValueError(f"parameter {name} must be a number, got {value!r}") from None
+    return out
+
+
+def _uint(value, name, top=_U64):
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, (int, _np.integer)):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__}")
+    value = int(value)
+    if value < 0 or value >= top:
+        raise ValueError(f"{name} must be in [0, {top}), got {value}")
+    return value
+
+
+def generate(
+    method: str,
+    *,
+    count: int | None = None,
+    radius: float | None = None,
+    dim: int = 2,
+    bounds=None,
+    torus: bool = False,
+    seed: int = 0,
+    threads: int = 0,
+    max_points: int = MAX_POINTS,
+    **params: float,
+) -> _np.ndarray:
+    """Sample points with a registered method (the list is below).
+
+    Returns a float64 array of shape (N, dim) that owns the library's own
+    buffer (no copy). ``count`` or ``radius`` sizes the set, as the method
+    allows; ``radius`` is the minimum distance between any two samples.
+    ``params`` are the method's parameters (``k=10`` for Bridson; a hyphen in
+    a name is written as an underscore). ``threads=0`` uses every core;
+    results never depend on the thread count. Raises ValueError for bad
+    input, with the command line's message.
+    """
+    return _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, False)
+
+
+def _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, sized):
+    if not isinstance(method, str):
+        raise TypeError(f"method must be a str, got {type(method).__name__}")
+    lo, hi = _bounds(bounds, dim)
+    return _pds.generate(
+        method,
+        _uint(count, "count"),
+        None if radius is None else float(radius),
+        int(dim),
+        lo,
+        hi,
+        bool(torus),
+        _uint(seed, "seed"),
+        int(threads),
+        _uint(max_points, "max_points"),
+        _params(method, params),
+        sized,
+    )
+
+
+def tile(
+    method: str,
+    *,
+    count: int | None = None,
+    radius: float | None = None,
+    dim: int = 2,
+    seed: int = 0,
+    threads: int = 0,
+    **params: float,
+) -> _np.ndarray:
+    """A tileable pattern: ``method`` on the unit torus (``pds tile``).
+
+    Its minimum distance holds across the seams, so copies of it cover the
+    plane (or space) without closer pairs. Same arguments as :func:`generate`;
+    as ``pds tile`` (and the tiled render samplers), a ``count`` asked of a
+    method that takes only a radius becomes the radius at which that many
+    points have relative radius 0.75 (the registry's sizing policy).
+    """
+    return _generate(method, count, radius, dim, None, True, seed, threads, MAX_POINTS, params, True)
+
+
+def methods() -> list[dict]:
+    """Every registered method, in the order ``pds --help`` lists them.
+
+    Each is a dict: ``name``, ``family``, ``summary``, ``citation``, ``docs``
+    (its page in the repository), ``takes_count``, ``takes_radius``, the
+    guarantees ``min_distance``, ``maximal``, ``exact_count``,
+    ``progressive``, ``deterministic``, ``dims``, and ``params`` (each with
+    ``name``, ``default``, ``min``, ``max``, ``integer``, ``help``).
+    """
+    return _pds.methods()
+
+
+def _sets(points):
+    """One (N, D) array, or a sequence of them (realisations of one process)."""
+    if isinstance(points, _np.ndarray):
+        return [points]
+    points = list(points)
+    if points and _np.ndim(points[0]) == 1:  # a list of coordinate rows
+        return [_np.asarray(points, dtype=float)]
+    return points
+
+
+def _dim(sets):
+    a = sets[0] if sets else None
+    return _np.shape(a)[1] if a is not None and _np.ndim(a) == 2 else 2
+
+
+def analyze(
+    points,
+    *,
+    bounds=None,
+    torus: bool = False,
+    radius: float | None = None,
+    max_frequency: int = 0,
+    spectrum: bool = False,
+    pcf_r_max: float = 0.0,
+    pcf_bandwidth: float = 0.0,
+) -> dict:
+    """The measures of ``pds analyze``, as the dict of its JSON output.
+
+    ``points``: an (N, D) array, or a list of them (realisations: the
+    first-set fields describe the first, spacing and discrepancy are means,
+    the spectrum and pair correlation averages). Keys, in the command line's
+    order: ``count``, ``dim``, ``domain``, ``min_distance`` (and
+    ``min_distance_pair``), ``mean_nn_distance``, ``relative_radius``,
+    ``max_packing_radius``; with ``radius``, also ``radius``,
+    ``min_distance_holds``, ``maximal`` and ``maximality``; then ``sets``,
+    ``rho_min``, ``rho_mean``, the discrepancies, ``spectrum`` and ``pcf``
+    summaries (docs/verification.md, docs/analysis.md). Measures that do not
+    exist are None. ``max_frequency`` (0: 128 in 2D, 32 in 3D) and
+    ``spectrum=True`` (compute it whatever it costs) are ``--frequencies``
+    and ``--spectrum``; ``pcf_r_max`` and ``pcf_bandwidth`` are ``--pcf-max``
+    and ``--pcf-bandwidth``.
+    """
+    if not _pds.has_analyze:
+        raise RuntimeError("pds was built without its json component (PDS_WITH_JSON=OFF)")
+    sets = _sets(points)
+    lo, hi = _bounds(bounds, _dim(sets))
+    text = _pds.analyze_json(
+        sets,
+        lo,
+        hi,
+        bool(torus),
+        None if radius is None else float(radius),
+        int(max_frequency),
+        bool(spectrum),
+        float(pcf_r_max),
+        float(pcf_bandwidth),
+    )
+    return _json.loads(text)
+
+
+def periodogram(points, *, bounds=None, torus: bool = False, max_frequency: int = 128) -> _np.ndarray:
+    """The exact periodogram |sum_j exp(-2 pi i k.u_j)|^2 / N, averaged over sets.
+
+    ``points``: an (N, D) array, or a list of them (realisations averaged
+    frequency by frequency). Returns an array of shape (2K+1,) * D, K =
+    ``max_frequency``, indexed ``[k_y + K, k_x + K]`` in 2D (``[k_z + K,
+    k_y + K, k_x + K]`` in 3D): frequencies in cycles per domain extent,
+    white noise flat at 1, the centre (k = 0) equal to N (docs/analysis.md).
+    """
+    sets = _sets(points)
+    lo, hi = _bounds(bounds, _dim(sets))
+    return _pds.periodogram(sets, lo, hi, bool(torus), int(max_frequency))
+
+
+def radial_power(points, *, bounds=None, torus: bool = False, max_frequency: int = 128):
+    """The periodogram's radial average and anisotropy: ``(frequency, power, anisotropy_db)``.
+
+    One annulus per frequency step; ``frequency`` is in units of the mean
+    inter-point distance (blue noise has its ring near 1), ``power`` is 1 for
+    white noise, ``anisotropy_db`` about 10 log10(1/M) for M isotropic sets.
+    """
+    sets = _sets(points)
+    lo, hi = _bounds(bounds, _dim(sets))
+    return _pds.radial_power(sets, lo, hi, bool(torus), int(max_frequency))
+
+
+def pair_correlation(
+    points, *, bounds=None, torus: bool = False, r_max: float = 0.0, bandwidth: float = 0.0, steps: int = 200
+):
+    """The pair correlation function g(r): ``(r, g)``, averaged over sets.
+
+    1 for white noise, 0 below a Poisson disk set's minimum distance with a
+    peak just above. ``r_max`` (default 2.5 mean inter-point distances) and
+    the kernel half-width ``bandwidth`` (default 0.1 of them) are in domain
+    units; 0 picks the default. A box gets the translation edge correction.
+    """
+    sets = _sets(points)
+    lo, hi = _bounds(bounds, _dim(sets))
+    return _pds.pair_correlation(sets, lo, hi, bool(torus), float(r_max), float(bandwidth), int(steps))
+
+
+def discrepancy(points, *, bounds=None, kind: str = "l2-star") -> float:
+    """Discrepancy of a point set against boxes anchored at the lower corner.
+
+    ``kind="l2-star"``: Warnock's L2-star discrepancy (up to 131072 points);
+    ``kind="star"``: the exact star discrepancy D* (about 10,000 points in 2D,
+    460 in 3D).
+    """
+    sets = _sets(points)
+    lo, hi = _bounds(bounds, _dim(sets))
+    return _pds.discrepancy(sets[0], lo, hi, str(kind))
+
+
+def render(
+    scene: str = "checkerboard",
+    sampler: str = "jittered",
+    *,
+    spp: int = 4,
+    size=(512, 512),
+    filter: str = "gaussian",
+    seed: int = 0,
+    tile_count: int = 4096,
+    threads: int = 0,
+    **params: float,
+) -> _np.ndarray:
+    """Render a test scene (``pds render``): a (height, width) float64 image.
+
+    ``scene``: checkerboard, zone-plate or constant; ``sampler``: random,
+    jittered, sobol-pixel, or any registered method tiled over the image
+    plane from a toroidal tile of ``tile_count`` points (``tiled:METHOD`` for
+    names taken by the per-pixel samplers); ``size`` is (width, height) in
+    pixels; ``filter``: box, tent, gaussian or mitchell. Grey levels in [0, 1].
+    """
+    if not _pds.has_render:
+        raise RuntimeError("pds was built without its render component (PDS_WITH_RENDER=OFF)")
+    width, height = (int(v) for v in size)
+    return _pds.render(
+        str(scene),
+        str(sampler),
+        width,
+        height,
+        int(spp),
+        str(filter),
+        _uint(seed, "seed"),
+        _uint(tile_count, "tile_count"),
+        int(threads),
+        _params(sampler.removeprefix("tiled:"), params),
+    )
+
+
+def _methods_text():
+    lines = ["", "    Methods:"]
+    for m in _METHODS:
+        sizing = " or ".join(s for s, on in (("count", m["takes_count"]), ("radius", m["takes_radius"])) if on)
+        lines.append(f"      {m['name']:<18}{m['summary']}")
+        lines.append(f"      {'':<18}takes {sizing}; dims {', '.join(map(str, m['dims']))}")
+        for p in m["params"]:
+            lines.append(f"      {'':<18}{p['name'].replace('-', '_')}={p['default']:g}  {p['help']}")
+    return "\n".join(lines)
+
+
+if generate.__doc__:  # None under python -OO
+    generate.__doc__ += _methods_text()
+
+from . import qmc  # noqa: E402  (uses the functions above)

@@ -1,0 +1,277 @@
+// _pds: the compiled half of the Python package `pds` (python/pds/), a thin
+// layer of pybind11 glue over the library. Every function takes plain values
+// (the Python wrappers in pds/__init__.py have already normalised keywords,
+// bounds and parameters), converts them to the library's types while holding
+// the GIL, releases the GIL for the work itself, and hands the library's
+// result buffer to NumPy without copying it (the array owns the moved
+// std::vector through a capsule).
+//
+// Errors: pds::InvalidArgument derives from std::invalid_argument, which
+// pybind11 raises as ValueError with the same message the command line prints
+// after "pds: error: "; pds::Failure (std::runtime_error) becomes
+// RuntimeError and std::bad_alloc MemoryError.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstring>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pds/analysis/discrepancy.h"
+#include "pds/analysis/pair_correlation.h"
+#include "pds/analysis/report.h"
+#include "pds/analysis/spectrum.h"
+#include "pds/error.h"
+#ifdef PDS_WITH_JSON
+#include "pds/io/report_json.h"
+#endif
+#include "pds/point.h"
+#include "pds/registry.h"
+#ifdef PDS_WITH_RENDER
+#include "pds/render/render.h"
+#endif
+
+namespace py = pybind11;
+
+namespace {
+
+using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// A NumPy array of `shape` that owns `values` (moved, not copied).
+py::array_t<double> adopt(std::vector<double>&& values, std::vector<py::ssize_t> shape) {
+  auto* owner = new std::vector<double>(std::move(values));
+  py::capsule release(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>(std::move(shape), owner->data(), release);
+}
+
+/// The request's domain, validated by the registry's own rules (same messages).
+template <int D>
+pds::Domain<D> make_domain(const std::vector<double>& lo, const std::vector<double>& hi, bool torus) {
+  pds::GenerateRequest spec;
+  spec.dim = D;
+  spec.lo = lo;
+  spec.hi = hi;
+  spec.torus = torus;
+  return spec.domain<D>();
+}
+
+/// The dimension of an (N, D) array of points; throws InvalidArgument otherwise.
+int dim_of(const InputArray& a, const std::string& what) {
+  if (a.ndim() != 2 || a.shape(1) < pds::kMinDim || a.shape(1) > pds::kMaxDim)
+    throw pds::InvalidArgument(what + " must be an array of shape (N, 2) or (N, 3), got " + std::to_string(a.ndim()) +
+                               " dimension(s)" +
+                               (a.ndim() == 2 ? " with " + std::to_string(a.shape(1)) + " columns" : ""));
+  return static_cast<int>(a.shape(1));
+}
+
+template <int D>
+pds::PointSet<D> to_points(const InputArray& a) {
+  static_assert(sizeof(pds::Point<D>) == D * sizeof(double));
+  pds::PointSet<D> points(static_cast<std::size_t>(a.shape(0)));
+  if (!points.empty()) std::memcpy(points.data(), a.data(), points.size() * sizeof(pds::Point<D>));
+  return points;
+}
+
+/// Several realisations of one process: arrays of one dimension.
+int dim_of_sets(const std::vector<InputArray>& sets) {
+  if (sets.empty()) throw pds::InvalidArgument("points: need at least one set");
+  const int dim = dim_of(sets[0], "points");
+  for (const InputArray& s : sets)
+    if (dim_of(s, "points") != dim)
+      throw pds::InvalidArgument("points: every set needs the same dimension (" + std::to_string(dim) + ")");
+  return dim;
+}
+
+template <int D>
+std::vector<pds::PointSet<D>> to_sets(const std::vector<InputArray>& sets) {
+  std::vector<pds::PointSet<D>> out;
+  out.reserve(sets.size());
+  for (const InputArray& s : sets) out.push_back(to_points<D>(s));
+  return out;
+}
+
+py::array_t<double> generate(const std::string& method, std::optional<std::uint64_t> count,
+                             std::optional<double> radius, int dim, std::vector<double> lo, std::vector<double> hi,
+                             bool torus, std::uint64_t seed, int threads, std::uint64_t max_points,
+                             std::map<std::string, double> params, bool sized) {
+  pds::GenerateRequest request;
+  request.dim = dim;
+  request.lo = std::move(lo);
+  request.hi = std::move(hi);
+  request.torus = torus;
+  request.count = count;
+  request.radius = radius;
+  request.seed = seed;
+  request.threads = threads;
+  request.max_points = max_points;
+  request.params = std::move(params);
+  pds::PointCloud cloud;
+  {
+    py::gil_scoped_release unlocked;
+    // sized: a count asked of a radius-only method becomes a radius by the
+    // registry's one policy (pds::size_request), as `pds tile` does.
+    cloud = pds::generate(method, sized ? pds::size_request(pds::find_method(method), request) : request);
+  }
+  const auto n = static_cast<py::ssize_t>(cloud.size());
+  return adopt(std::move(cloud.coords), {n, cloud.dim});
+}
+
+py::list methods() {
+  py::list out;
+  for (const pds::Method& m : pds::methods()) {
+    py::list params;
+    for (const pds::MethodParam& p : m.params)
+      params.append(py::dict(py::arg("name") = p.name, py::arg("default") = p.default_value, py::arg("min") = p.min,
+                             py::arg("max") = p.max, py::arg("integer") = p.integer, py::arg("help") = p.help));
+    out.append(py::dict(py::arg("name") = m.name, py::arg("family") = std::string(pds::family_name(m.family)),
+                        py::arg("summary") = m.summary, py::arg("citation") = m.citation, py::arg("docs") = m.docs,
+                        py::arg("takes_count") = m.takes_count, py::arg("takes_radius") = m.takes_radius,
+                        py::arg("min_distance") = m.min_distance, py::arg("maximal") = m.maximal,
+                        py::arg("exact_count") = m.exact_count, py::arg("progressive") = m.progressive,
+                        py::arg("deterministic") = m.deterministic, py::arg("dims") = m.dims,
+                        py::arg("params") = params));
+  }
+  return out;
+}
+
+py::array_t<double> periodogram(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
+                                const std::vector<double>& hi, bool torus, int max_frequency) {
+  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const auto sets = to_sets<D>(arrays);
+    const auto domain = make_domain<D>(lo, hi, torus);
+    pds::Periodogram p;
+    {
+      py::gil_scoped_release unlocked;
+      p = pds::periodogram<D>(sets, domain, {.max_frequency = max_frequency});
+    }
+    // Axis 0 varies fastest in the library: as a C array the last index is k_0.
+    return adopt(std::move(p.power), std::vector<py::ssize_t>(D, p.side()));
+  });
+}
+
+py::tuple radial_power(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
+                       const std::vector<double>& hi, bool torus, int max_frequency) {
+  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const auto sets = to_sets<D>(arrays);
+    const auto domain = make_domain<D>(lo, hi, torus);
+    pds::RadialSpectrum r;
+    {
+      py::gil_scoped_release unlocked;
+      r = pds::radial_average(pds::periodogram<D>(sets, domain, {.max_frequency = max_frequency}));
+    }
+    const auto n = static_cast<py::ssize_t>(r.power.size());
+    return py::make_tuple(adopt(std::move(r.frequency), {n}), adopt(std::move(r.power), {n}),
+                          adopt(std::move(r.anisotropy_db), {n}));
+  });
+}
+
+py::tuple pair_correlation(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
+                           const std::vector<double>& hi, bool torus, double r_max, double bandwidth, int steps) {
+  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const auto sets = to_sets<D>(arrays);
+    const auto domain = make_domain<D>(lo, hi, torus);
+    pds::PairCorrelation g;
+    {
+      py::gil_scoped_release unlocked;
+      g = pds::pair_correlation<D>(sets, domain, {.r_max = r_max, .bandwidth = bandwidth, .steps = steps});
+    }
+    const auto n = static_cast<py::ssize_t>(g.r.size());
+    return py::make_tuple(adopt(std::move(g.r), {n}), adopt(std::move(g.g), {n}));
+  });
+}
+
+double discrepancy(const InputArray& array, const std::vector<double>& lo, const std::vector<double>& hi,
+                   const std::string& kind) {
+  if (kind != "l2-star" && kind != "star")
+    throw pds::InvalidArgument("discrepancy: kind must be 'l2-star' or 'star', got '" + kind + "'");
+  return pds::visit_dim(dim_of(array, "points"), [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const auto points = to_points<D>(array);
+    const auto domain = make_domain<D>(lo, hi, false);
+    py::gil_scoped_release unlocked;
+    return kind == "star" ? pds::star_discrepancy(points, domain) : pds::l2_star_discrepancy(points, domain);
+  });
+}
+
+#ifdef PDS_WITH_JSON
+/// The analysis report as the JSON `pds analyze` prints (the Python side
+/// parses it), so the keys, their order and their values are the CLI's.
+std::string analyze_json(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
+                         const std::vector<double>& hi, bool torus, std::optional<double> radius, int max_frequency,
+                         bool spectrum, double pcf_r_max, double pcf_bandwidth) {
+  if (max_frequency < 0) throw pds::InvalidArgument("max_frequency must be positive");
+  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const auto sets = to_sets<D>(arrays);
+    const auto domain = make_domain<D>(lo, hi, torus);
+    py::gil_scoped_release unlocked;
+    const pds::AnalysisReport report = pds::analyze<D>(sets, domain,
+                                                       {.radius = radius,
+                                                        .max_frequency = max_frequency,
+                                                        .spectrum = spectrum,
+                                                        .pcf = {.r_max = pcf_r_max, .bandwidth = pcf_bandwidth}});
+    return pds::analysis_report_json(report);
+  });
+}
+#endif
+
+#ifdef PDS_WITH_RENDER
+py::array_t<double> render(const std::string& scene_name, const std::string& sampler_name, int width, int height,
+                           int spp, const std::string& filter, std::uint64_t seed, std::uint64_t tile_count,
+                           int threads, std::map<std::string, double> params) {
+  if (width < 1 || height < 1 || width > pds::kMaxImageSide || height > pds::kMaxImageSide)
+    throw pds::InvalidArgument("size must be between 1x1 and " + std::to_string(pds::kMaxImageSide) + "x" +
+                               std::to_string(pds::kMaxImageSide) + ", got " + std::to_string(width) + "x" +
+                               std::to_string(height));
+  pds::Image image;
+  {
+    py::gil_scoped_release unlocked;
+    const pds::RenderOptions options{pds::parse_filter(filter), threads};
+    const auto scene = pds::make_scene(scene_name, width, height);
+    const auto sampler = pds::make_image_sampler(
+        sampler_name, {.spp = spp, .seed = seed, .tile_count = tile_count, .params = std::move(params)});
+    image = pds::render(*scene, *sampler, width, height, options);
+  }
+  return adopt(std::move(image.pixels), {image.height, image.width});
+}
+#endif
+
+}  // namespace
+
+PYBIND11_MODULE(_pds, m) {
+  m.doc() = "The compiled half of the pds package; use the functions of `pds` itself.";
+  m.def("generate", &generate, py::arg("method"), py::arg("count"), py::arg("radius"), py::arg("dim"), py::arg("lo"),
+        py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"), py::arg("params"),
+        py::arg("sized"));
+  m.def("methods", &methods);
+  m.def("periodogram", &periodogram, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
+        py::arg("max_frequency"));
+  m.def("radial_power", &radial_power, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
+        py::arg("max_frequency"));
+  m.def("pair_correlation", &pair_correlation, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
+        py::arg("r_max"), py::arg("bandwidth"), py::arg("steps"));
+  m.def("discrepancy", &discrepancy, py::arg("points"), py::arg("lo"), py::arg("hi"), py::arg("kind"));
+#ifdef PDS_WITH_JSON
+  m.def("analyze_json", &analyze_json, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
+        py::arg("radius"), py::arg("max_frequency"), py::arg("spectrum"), py::arg("pcf_r_max"),
+        py::arg("pcf_bandwidth"));
+  m.attr("has_analyze") = true;
+#else
+  m.attr("has_analyze") = false;
+#endif
+#ifdef PDS_WITH_RENDER
+  m.def("render", &render, py::arg("scene"), py::arg("sampler"), py::arg("width"), py::arg("height"), py::arg("spp"),
+        py::arg("filter"), py::arg("seed"), py::arg("tile_count"), py::arg("threads"), py::arg("params"));
+  m.attr("has_render") = true;
+#else
+  m.attr("has_render") = false;
+#endif
+  m.attr("max_points_default") = pds::kDefaultMaxPoints;
+}
