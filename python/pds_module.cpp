@@ -132,8 +132,8 @@ py::list methods() {
                         py::arg("takes_count") = m.takes_count, py::arg("takes_radius") = m.takes_radius,
                         py::arg("min_distance") = m.min_distance, py::arg("maximal") = m.maximal,
                         py::arg("exact_count") = m.exact_count, py::arg("progressive") = m.progressive,
-                        py::arg("deterministic") = m.deterministic, py::arg("dims") = m.dims,
-                        py::arg("params") = params));
+                        py::arg("deterministic") = m.deterministic, py::arg("square_torus_only") = m.square_torus_only,
+                        py::arg("dims") = m.dims, py::arg("params") = params));
   }
   return out;
 }

@@ -97,7 +97,7 @@ std::string methods_readme_table() {
   std::ostringstream os;
   os << "| family | methods | page |\n|---|---|---|\n";
   for (Family family : {Family::white_noise, Family::stratified, Family::sequence, Family::poisson_disk,
-                        Family::fast_poisson_disk, Family::maximal_poisson_disk}) {
+                        Family::fast_poisson_disk, Family::maximal_poisson_disk, Family::optimized}) {
     std::string names, pages;
     for (const Method& m : methods()) {
       if (m.family != family) continue;

@@ -54,7 +54,15 @@ struct GenerateRequest {
 };
 
 /// The groups the README and docs list methods in.
-enum class Family { white_noise, stratified, sequence, poisson_disk, fast_poisson_disk, maximal_poisson_disk };
+enum class Family {
+  white_noise,
+  stratified,
+  sequence,
+  poisson_disk,
+  fast_poisson_disk,
+  maximal_poisson_disk,
+  optimized
+};
 std::string_view family_name(Family family);
 
 /// The relative radius (Lagae & Dutre 2008; analysis/relative_radius.h) a
@@ -77,12 +85,13 @@ struct Method {
   std::string citation;  // the paper, or "" for elementary patterns
   bool takes_count = false;
   bool takes_radius = false;
-  bool min_distance = false;   // with --radius, every pair of samples is at least that far apart
-  bool maximal = false;        // with --radius, no point of the domain is farther than radius from a sample
-  bool exact_count = false;    // with --count N, exactly N points (or InvalidArgument)
-  bool progressive = false;    // every prefix of the output is itself a well-spread set
-  bool deterministic = false;  // ignores the seed
-  bool compare = false;        // one of `pds compare`'s default rows
+  bool min_distance = false;       // with --radius, every pair of samples is at least that far apart
+  bool maximal = false;            // with --radius, no point of the domain is farther than radius from a sample
+  bool exact_count = false;        // with --count N, exactly N points (or InvalidArgument)
+  bool progressive = false;        // every prefix of the output is itself a well-spread set
+  bool deterministic = false;      // ignores the seed
+  bool compare = false;            // one of `pds compare`'s default rows
+  bool square_torus_only = false;  // runs on tori with equal periods only (generate() refuses the rest)
   std::vector<int> dims{2, 3};
   std::vector<RhoBand> rho;  // expected relative radius, where measured
   std::vector<MethodParam> params;

@@ -16,7 +16,7 @@ def cases():
     """Every method in every dimension it supports, sized as it allows, box and torus."""
     for m in METHODS:
         for dim in m["dims"]:
-            torus = dim == 3
+            torus = dim == 3 or m["square_torus_only"]
             if m["takes_count"]:
                 yield pytest.param(m["name"], dim, {"count": 300}, torus, id=f"{m['name']}-{dim}d-count")
             if m["takes_radius"]:

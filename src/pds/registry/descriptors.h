@@ -19,11 +19,13 @@ const Method& sobol_method();
 const Method& dart_throwing_method();
 const Method& bridson_method();
 const Method& best_candidate_method();
+const Method& elimination_method();
 const Method& dunbar_humphreys_method();
 const Method& wei_method();
 const Method& ebeida_method();
 #ifdef PDS_WITH_CGAL
 const Method& jones_method();
+const Method& fpo_method();
 #endif
 
 }  // namespace pds::registry_detail

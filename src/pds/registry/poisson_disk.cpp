@@ -1,13 +1,17 @@
 // Registry entries of the classic Poisson disk methods: dart throwing,
-// Bridson, best-candidate; --count without --radius goes through the
-// sizing policy.
+// Bridson, best-candidate, weighted sample elimination; --count without
+// --radius goes through the sizing policy.
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "descriptors.h"
 #include "pds/error.h"
+#include "pds/limits.h"
 #include "pds/samplers/best_candidate.h"
 #include "pds/samplers/bridson.h"
 #include "pds/samplers/dart_throwing.h"
+#include "pds/samplers/elimination.h"
 #include "pds/samplers/sizing.h"
 
 namespace pds::registry_detail {
@@ -130,6 +134,43 @@ const Method& best_candidate_method() {
               params.radius = r.radius;
               params.m = static_cast<int>(r.param("m", kBestCandidateDefaultM));
               return best_candidate(params, domain, r.seed);
+            });
+          },
+  };
+  return method;
+}
+
+const Method& elimination_method() {
+  static const Method method{
+      .name = "elimination",
+      .family = Family::poisson_disk,
+      .docs = "docs/elimination.md",
+      .summary =
+          "Yuksel's weighted sample elimination: from candidates x N white-noise points, remove the most crowded "
+          "until N remain; exact count, progressive, no hard minimum distance",
+      .citation = "C. Yuksel, Sample elimination for generating Poisson disk sample sets, Eurographics 2015",
+      .takes_count = true,
+      .exact_count = true,
+      .progressive = true,
+      .params = {{"candidates", 5, 1, 100, false, "white-noise candidates as a multiple of the count"},
+                 {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
+                 {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},
+                 {"beta", 0.65, 0, 0.99, false, "weight limit d_min = d_max (1 - (N/M)^gamma) beta; 0: none"},
+                 {"gamma", 1.5, 0.1, 10, false, "weight limit exponent"}},
+      .run =
+          [](const GenerateRequest& r) {
+            return run_typed(r, [&](const auto& domain) {
+              EliminationParams params;
+              params.count = *r.count;
+              params.candidates = r.param("candidates", 5);
+              params.progressive = r.param("progressive", 1) != 0;
+              params.weights.alpha = r.param("alpha", 8);
+              params.weights.beta = r.param("beta", 0.65);
+              params.weights.gamma = r.param("gamma", 1.5);
+              // The candidates, not the output, are what takes the memory.
+              require_point_budget(std::ceil(params.candidates * static_cast<double>(params.count)), r.dim,
+                                   std::numeric_limits<std::uint64_t>::max(), "elimination's candidates");
+              return elimination(params, domain, r.seed);
             });
           },
   };

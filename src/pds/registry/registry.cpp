@@ -14,14 +14,27 @@ std::span<const Method> methods() {
   using namespace registry_detail;
   // The one table of methods, in the order --help lists them.
   static const std::vector<Method> table = {
-      white_noise_method(),   regular_method(), jittered_method(),       halton_method(),
-      hammersley_method(),    sobol_method(),   multi_jittered_method(), latin_hypercube_method(),
-      dart_throwing_method(), bridson_method(), best_candidate_method(), dunbar_humphreys_method(),
+      white_noise_method(),
+      regular_method(),
+      jittered_method(),
+      halton_method(),
+      hammersley_method(),
+      sobol_method(),
+      multi_jittered_method(),
+      latin_hypercube_method(),
+      dart_throwing_method(),
+      bridson_method(),
+      best_candidate_method(),
+      elimination_method(),
+      dunbar_humphreys_method(),
       wei_method(),
 #ifdef PDS_WITH_CGAL
       jones_method(),
 #endif
       ebeida_method(),
+#ifdef PDS_WITH_CGAL
+      fpo_method(),
+#endif
   };
   return table;
 }
@@ -40,6 +53,8 @@ std::string_view family_name(Family family) {
       return "fast Poisson disk";
     case Family::maximal_poisson_disk:
       return "maximal Poisson disk";
+    case Family::optimized:
+      return "optimized blue noise";
   }
   return "?";
 }
@@ -69,6 +84,12 @@ void validate(const Method& m, const GenerateRequest& r) {
   visit_dim(r.dim, [&](auto d) {
     constexpr int D = decltype(d)::value;
     const Domain<D> domain = r.domain<D>();  // validates the bounds
+    if (m.square_torus_only) {
+      bool square = true;
+      for (int i = 1; i < D; ++i) square = square && domain.extent(i) == domain.extent(0);
+      if (!domain.periodic || !square)
+        throw InvalidArgument(m.name + " runs on a torus with equal periods only (--torus, square --bounds)");
+    }
     if (r.radius) {
       if (!m.takes_radius) throw InvalidArgument(m.name + " does not take --radius (use --count)");
       require_radius_budget(domain, *r.radius, r.max_points);

@@ -1,0 +1,58 @@
+#pragma once
+// Farthest-point optimization: each point in turn is moved to the farthest
+// point from the others (the centre of the largest empty circle of their
+// Delaunay triangulation, near its old place), sweep after sweep, which
+// drives the minimum distance up to relative radius ~0.93 (T. Schlömer,
+// D. Heck, O. Deussen, Farthest-point optimized point sets with maximized
+// minimum distance, High Performance Graphics 2011).
+
+#include <cstdint>
+#include <vector>
+
+#include "pds/domain.h"
+#include "pds/point.h"
+
+namespace pds {
+
+struct FpoParams {
+  /// Sweeps at most (each moves every point once, in index order), >= 1.
+  int sweeps = 100;
+  /// Stop rule: stop after a sweep that grows the minimum distance by less
+  /// than this fraction (0: stop only when it does not grow at all), >= 0.
+  double tolerance = 1e-4;
+};
+
+/// What one sweep left: over all points, the smallest and the mean distance
+/// to the nearest other point, and how many points moved.
+struct FpoSweep {
+  double min_distance = 0;
+  double mean_nn_distance = 0;
+  std::size_t moved = 0;
+};
+
+struct FpoResult {
+  PointSet<2> points;
+  /// sweeps[0] is the starting set (moved = 0), then one entry per sweep.
+  std::vector<FpoSweep> sweeps;
+};
+
+/// Optimizes `start` on a square torus (CGAL's periodic Delaunay
+/// triangulation takes square periods only). Each step removes point x from
+/// the triangulation and takes, among the faces incident to x's former
+/// neighbours (the hole and its ring), the one with the largest circumcircle;
+/// x moves to its centre if its nearest neighbour there is farther than at
+/// its old place (Domain::distance2), else stays.
+/// Guarantees: the points stay in [lo, hi) and keep their count and order;
+/// the minimum distance never decreases from one sweep to the next (a move
+/// takes x only where its nearest neighbour is farther than before, so no
+/// new pair is closer than the old minimum), and each sweep's figures are
+/// exact for the set it left; deterministic (no randomness).
+/// Invalid (InvalidArgument): fewer than 2 points, a box or a torus whose
+/// periods differ, a point outside the domain or two equal points, sweeps < 1,
+/// tolerance < 0.
+FpoResult fpo_optimize(const PointSet<2>& start, const Domain<2>& domain, const FpoParams& params);
+
+/// fpo_optimize from `count` white-noise points drawn from `seed`.
+FpoResult fpo(std::uint64_t count, const Domain<2>& domain, const FpoParams& params, std::uint64_t seed);
+
+}  // namespace pds

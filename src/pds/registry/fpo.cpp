@@ -1,0 +1,43 @@
+// Registry entry of farthest-point optimization: built only with the CGAL
+// component (PDS_WITH_CGAL).
+#include "pds/samplers/fpo.h"
+
+#include "descriptors.h"
+#include "pds/samplers/elimination.h"
+
+namespace pds::registry_detail {
+
+const Method& fpo_method() {
+  static const Method method{
+      .name = "fpo",
+      .family = Family::optimized,
+      .docs = "docs/fpo.md",
+      .summary =
+          "farthest-point optimization (Schlömer et al.): each point moved to the largest empty circle near it, "
+          "sweeps until the minimum distance stops growing; 2D square torus",
+      .citation =
+          "T. Schlömer, D. Heck, O. Deussen, Farthest-point optimized point sets with maximized minimum "
+          "distance, HPG 2011",
+      .takes_count = true,
+      .exact_count = true,
+      .square_torus_only = true,
+      .dims = {2},
+      .params = {{"sweeps", 100, 1, 100000, true, "most sweeps (each moves every point once)"},
+                 {"tolerance", 1e-4, 0, 1, false,
+                  "stop after a sweep that grows the minimum distance by less than this fraction"},
+                 {"start", 0, 0, 1, true, "starting set: 0 white noise, 1 sample elimination (fewer sweeps)"}},
+      .run =
+          [](const GenerateRequest& r) {
+            const Domain<2> domain = r.domain<2>();
+            FpoParams params;
+            params.sweeps = static_cast<int>(r.param("sweeps", 100));
+            params.tolerance = r.param("tolerance", 1e-4);
+            if (r.param("start", 0) == 0) return PointCloud::from<2>(fpo(*r.count, domain, params, r.seed).points);
+            const PointSet<2> start = elimination<2>({.count = *r.count}, domain, r.seed);
+            return PointCloud::from<2>(fpo_optimize(start, domain, params).points);
+          },
+  };
+  return method;
+}
+
+}  // namespace pds::registry_detail

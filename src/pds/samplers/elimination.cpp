@@ -1,0 +1,339 @@
+// C. Yuksel, Sample elimination for generating Poisson disk sample sets,
+// Computer Graphics Forum 34(2) (Eurographics 2015), 25-32.
+//
+// Method: every candidate i gets the weight w_i = sum over the other
+// candidates j within d_max of (1 - max(d_ij, d_min) / d_max)^alpha
+// (section 3, with the weight limit of section 3.2). The candidates sit in a
+// max-heap on their weights; the top one is removed and its contribution
+// subtracted from each remaining neighbour, whose heap entry moves down
+// (decrease-key), until N remain. d_max = 2 r_max, r_max the radius of the
+// densest packing of N balls in the domain's volume (hexagonal in 2D, FCC in
+// 3D: analysis/relative_radius.h), so d_max is the largest minimum distance N
+// samples could have. Progressive order (section 5): the N survivors are
+// eliminated again to N/2 with d_max grown by 2^(1/D), the N/2 to N/4, and
+// so on; each round's eliminated samples follow its survivors, the last
+// eliminated first (the reverse elimination order is itself a ranking).
+// The weight limit d_min stays the one of the first round, as in the paper's
+// reference code (cyCodeBase, cySampleElim.h).
+//
+// Neighbour search: the candidates are sorted by the cell of a uniform grid
+// of edge about d_max / 2 (GridNeighbourhood's cell arithmetic), so the
+// candidates within d_max of a point are the contiguous runs of the cells of
+// one window (5 cells an axis), each cell once, wrapped across a torus's seam.
+// On a torus distances are to the nearest periodic image (Domain::distance2),
+// so every candidate counts once even when d_max exceeds half a period. The
+// heap holds (weight, index) pairs, ties broken by index, so the result is
+// deterministic.
+//
+// Guarantees: exactly N samples, each a candidate (so inside the domain);
+// same seed, same points. No minimum distance: nothing bounds the closest
+// pair (docs/elimination.md gives the measured relative radius).
+//
+// Complexity: O(M k) for the weights and O((M - N) (k + k' log M)) for the
+// elimination, with M candidates, k ~ 18 (2D) or ~30 (3D) neighbours within
+// d_max for M = 5N, k' the ones still alive; progressive order adds the same
+// on N, N/2, ... samples (about twice the cost on N). Memory: the sorted
+// candidates, a heap entry and a heap position each, and the grid's cell
+// starts (about 4 cells a candidate).
+
+#include "pds/samplers/elimination.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <sstream>
+#include <string>
+
+#include "pds/analysis/relative_radius.h"
+#include "pds/detail/format.h"
+#include "pds/error.h"
+#include "pds/grid.h"
+#include "pds/grid_neighbourhood.h"
+#include "pds/rng.h"
+#include "pds/samplers/random.h"
+
+namespace pds {
+namespace {
+
+constexpr std::size_t kMaxCandidates = std::size_t{1} << 31;
+
+// The paper's weight of a neighbour at squared distance d2 < d_max^2.
+class WeightFunction {
+ public:
+  WeightFunction(double d_max, double d_min, double alpha)
+      : inv_d_max_(1.0 / d_max), d_min_(d_min), alpha_(alpha), alpha8_(alpha == 8.0) {}
+
+  [[gnu::always_inline]] double operator()(double d2) const {
+    const double d = std::max(std::sqrt(d2), d_min_);
+    const double x = std::max(0.0, 1.0 - d * inv_d_max_);
+    if (alpha8_) {
+      const double x2 = x * x, x4 = x2 * x2;
+      return x4 * x4;
+    }
+    return std::pow(x, alpha_);
+  }
+
+ private:
+  double inv_d_max_, d_min_, alpha_;
+  bool alpha8_;
+};
+
+// Points sorted by grid cell: the points near a point are a few contiguous
+// runs. Indices are positions in the sorted order.
+template <int D>
+class CellIndex {
+ public:
+  CellIndex(const Domain<D>& domain, std::span<const Point<D>> points, double reach) : domain_(domain), reach_(reach) {
+    // Cells of edge about reach / 2, fewer where the grid would outgrow the
+    // points (a thin axis, or a tiny set in a large domain).
+    const double max_cells = std::min<double>(kMaxGridCells, 4.0 * static_cast<double>(points.size()) + 64.0);
+    std::array<int, D> cells;
+    double edge = reach / 2.0;
+    while (true) {
+      double total = 1.0;
+      for (int i = 0; i < D; ++i) {
+        cells[i] = static_cast<int>(std::clamp(std::floor(domain.extent(i) / edge), 1.0, 1e9));
+        total *= cells[i];
+      }
+      if (total <= max_cells) break;
+      edge *= 1.25;
+    }
+    for (int i = 0; i < D; ++i) {
+      inv_edge_[i] = cells[i] / domain.extent(i);
+      scale_ = std::max({scale_, std::abs(domain.lo[i]), std::abs(domain.hi[i])});
+    }
+    hood_ = GridNeighbourhood<D>(domain, cells);
+    // Counting sort by cell, stable: ties keep the input order.
+    std::vector<std::uint32_t> cell_of(points.size());
+    start_.assign(hood_.size() + 1, 0);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      std::size_t c = 0;
+      for (int i = 0; i < D; ++i) {
+        const double u = std::floor((points[k][i] - domain.lo[i]) * inv_edge_[i]);
+        c += static_cast<std::size_t>(std::clamp(u, 0.0, static_cast<double>(cells[i] - 1))) * hood_.stride(i);
+      }
+      cell_of[k] = static_cast<std::uint32_t>(c);
+      ++start_[c + 1];
+    }
+    for (std::size_t c = 0; c < hood_.size(); ++c) start_[c + 1] += start_[c];
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+    points_.resize(points.size());
+    original_.resize(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const std::uint32_t at = fill[cell_of[k]]++;
+      points_[at] = points[k];
+      original_[at] = static_cast<std::uint32_t>(k);
+    }
+  }
+
+  std::size_t size() const { return points_.size(); }
+  const Point<D>& point(std::uint32_t k) const { return points_[k]; }
+  std::uint32_t original(std::uint32_t k) const { return original_[k]; }
+
+  /// Calls f(k, d2) for every point k other than `self` closer than the reach
+  /// to points_[self], in a fixed order; d2 = Domain::distance2(point k, p).
+  template <class F>
+  [[gnu::always_inline]] void for_each_near(std::uint32_t self, F&& f) const {
+    const Point<D>& p = points_[self];
+    const double r = reach_ * (1.0 + 1e-12) + 1e-12 * scale_;
+    const double r2 = reach_ * reach_;
+    std::array<int, D> first, last;
+    for (int i = 0; i < D; ++i) {
+      const double x = p[i] - domain_.lo[i];
+      first[i] = static_cast<int>(std::floor((x - r) * inv_edge_[i]));
+      last[i] = static_cast<int>(std::floor((x + r) * inv_edge_[i]));
+    }
+    hood_.for_each_cell(hood_.window(first, last), [&](std::size_t cell, const std::array<int, D>&) {
+      for (std::uint32_t k = start_[cell], end = start_[cell + 1]; k < end; ++k) {
+        if (k == self) continue;
+        const double d2 = domain_.distance2(points_[k], p);
+        if (d2 < r2) f(k, d2);
+      }
+      return true;
+    });
+  }
+
+ private:
+  Domain<D> domain_;
+  double reach_;
+  double scale_ = 0.0;
+  std::array<double, D> inv_edge_{};
+  GridNeighbourhood<D> hood_;
+  std::vector<std::uint32_t> start_;
+  PointSet<D> points_;
+  std::vector<std::uint32_t> original_;
+};
+
+// A binary max-heap of (weight, index) with the position of each index, for
+// decrease-key. Larger weight first; equal weights, smaller index first.
+class WeightHeap {
+ public:
+  static constexpr std::uint32_t kGone = std::numeric_limits<std::uint32_t>::max();
+
+  explicit WeightHeap(const std::vector<double>& weights) : heap_(weights.size()), position_(weights.size()) {
+    for (std::size_t k = 0; k < weights.size(); ++k) {
+      heap_[k] = {weights[k], static_cast<std::uint32_t>(k)};
+      position_[k] = static_cast<std::uint32_t>(k);
+    }
+    for (std::size_t at = heap_.size() / 2; at-- > 0;) sift_down(at);
+  }
+
+  bool contains(std::uint32_t k) const { return position_[k] != kGone; }
+
+  std::uint32_t pop() {
+    const std::uint32_t top = heap_[0].index;
+    position_[top] = kGone;
+    heap_[0] = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) {
+      position_[heap_[0].index] = 0;
+      sift_down(0);
+    }
+    return top;
+  }
+
+  /// Lowers k's weight by `amount` >= 0.
+  void decrease(std::uint32_t k, double amount) {
+    const std::size_t at = position_[k];
+    heap_[at].weight -= amount;
+    sift_down(at);
+  }
+
+ private:
+  struct Entry {
+    double weight;
+    std::uint32_t index;
+  };
+  static bool above(const Entry& a, const Entry& b) {
+    return a.weight > b.weight || (a.weight == b.weight && a.index < b.index);
+  }
+  void sift_down(std::size_t at) {
+    const Entry moving = heap_[at];
+    const std::size_t n = heap_.size();
+    while (true) {
+      std::size_t child = 2 * at + 1;
+      if (child >= n) break;
+      if (child + 1 < n && above(heap_[child + 1], heap_[child])) ++child;
+      if (!above(heap_[child], moving)) break;
+      heap_[at] = heap_[child];
+      position_[heap_[at].index] = static_cast<std::uint32_t>(at);
+      at = child;
+    }
+    heap_[at] = moving;
+    position_[moving.index] = static_cast<std::uint32_t>(at);
+  }
+
+  std::vector<Entry> heap_;
+  std::vector<std::uint32_t> position_;
+};
+
+// One round: eliminates `points` down to `keep`. Returns indices into
+// `points`: the survivors first (in input order), then the eliminated, the
+// last eliminated first.
+template <int D>
+std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::size_t keep, const Domain<D>& domain,
+                                           double d_max, const WeightFunction& weight) {
+  const CellIndex<D> index(domain, points, d_max);
+  const std::size_t n = index.size();
+  std::vector<double> weights(n, 0.0);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    double sum = 0.0;
+    index.for_each_near(k, [&](std::uint32_t, double d2) { sum += weight(d2); });
+    weights[k] = sum;
+  }
+  WeightHeap heap(weights);
+  std::vector<std::uint32_t> eliminated;  // sorted positions, in elimination order
+  eliminated.reserve(n - keep);
+  for (std::size_t left = n; left > keep; --left) {
+    const std::uint32_t gone = heap.pop();
+    eliminated.push_back(gone);
+    // The pair's weight is evaluated from the neighbour's side, as when it
+    // was added (distance2 is symmetric, so the terms cancel exactly anyway).
+    index.for_each_near(gone, [&](std::uint32_t k, double d2) {
+      if (heap.contains(k)) heap.decrease(k, weight(d2));
+    });
+  }
+  std::vector<std::uint32_t> order;
+  order.reserve(n);
+  for (std::uint32_t k = 0; k < n; ++k)
+    if (heap.contains(k)) order.push_back(k);
+  // Survivors in input order, then the eliminated, the last eliminated first.
+  for (std::uint32_t& k : order) k = index.original(k);
+  std::sort(order.begin(), order.end());
+  for (auto it = eliminated.rbegin(); it != eliminated.rend(); ++it) order.push_back(index.original(*it));
+  return order;
+}
+
+void validate(const EliminationWeights& w) {
+  if (!(w.alpha > 0.0) || !std::isfinite(w.alpha))
+    throw InvalidArgument("elimination: alpha must be positive and finite, got " + detail::format_number(w.alpha));
+  if (!(w.beta >= 0.0 && w.beta < 1.0))
+    throw InvalidArgument("elimination: beta must be in [0, 1), got " + detail::format_number(w.beta));
+  if (!(w.gamma > 0.0) || !std::isfinite(w.gamma))
+    throw InvalidArgument("elimination: gamma must be positive and finite, got " + detail::format_number(w.gamma));
+}
+
+}  // namespace
+
+template <int D>
+PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const Domain<D>& domain,
+                      const EliminationWeights& weights, bool progressive) {
+  domain.validate();
+  validate(weights);
+  if (count == 0) throw InvalidArgument("elimination: count must be at least 1, got 0");
+  if (count > candidates.size())
+    throw InvalidArgument("elimination: count " + std::to_string(count) + " is more than the " +
+                          std::to_string(candidates.size()) + " candidates");
+  if (candidates.size() > kMaxCandidates)
+    throw InvalidArgument("elimination: more than 2^31 candidates (" + std::to_string(candidates.size()) + ")");
+  for (const Point<D>& p : candidates)
+    if (!domain.contains(p)) {
+      std::ostringstream os;
+      os << "elimination: candidate " << p << " lies outside " << domain;
+      throw InvalidArgument(os.str());
+    }
+  const std::size_t n = static_cast<std::size_t>(count);
+  double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
+  const double ratio = static_cast<double>(n) / static_cast<double>(candidates.size());
+  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
+  const WeightFunction first(d_max, d_min, weights.alpha);
+  const std::vector<std::uint32_t> kept = eliminate_round<D>(candidates, n, domain, d_max, first);
+  PointSet<D> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
+  if (!progressive) return out;
+  PointSet<D> round(n);
+  for (std::size_t size = n; size >= 2; size /= 2) {
+    d_max *= std::pow(2.0, 1.0 / D);
+    const WeightFunction weight(d_max, d_min, weights.alpha);
+    const std::vector<std::uint32_t> order =
+        eliminate_round<D>(std::span<const Point<D>>(out.data(), size), size / 2, domain, d_max, weight);
+    for (std::size_t i = 0; i < size; ++i) round[i] = out[order[i]];
+    std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), out.begin());
+  }
+  return out;
+}
+
+template <int D>
+PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain, std::uint64_t seed) {
+  domain.validate();
+  validate(params.weights);
+  if (params.count == 0) throw InvalidArgument("elimination: count must be at least 1, got 0");
+  if (!(params.candidates >= 1.0) || !std::isfinite(params.candidates))
+    throw InvalidArgument("elimination: candidates must be a factor of at least 1, got " +
+                          detail::format_number(params.candidates));
+  const double m = std::ceil(params.candidates * static_cast<double>(params.count));
+  if (m > static_cast<double>(kMaxCandidates))
+    throw InvalidArgument("elimination: " + detail::format_number(m) + " candidates, more than 2^31");
+  Rng rng(seed);
+  PointSet<D> candidates(static_cast<std::size_t>(m));
+  for (Point<D>& p : candidates) p = uniform_point(rng, domain);
+  return eliminate(candidates, params.count, domain, params.weights, params.progressive);
+}
+
+template PointSet<2> elimination<2>(const EliminationParams&, const Domain<2>&, std::uint64_t);
+template PointSet<3> elimination<3>(const EliminationParams&, const Domain<3>&, std::uint64_t);
+template PointSet<2> eliminate<2>(const PointSet<2>&, std::uint64_t, const Domain<2>&, const EliminationWeights&, bool);
+template PointSet<3> eliminate<3>(const PointSet<3>&, std::uint64_t, const Domain<3>&, const EliminationWeights&, bool);
+
+}  // namespace pds

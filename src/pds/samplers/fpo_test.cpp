@@ -1,0 +1,84 @@
+#include "pds/samplers/fpo.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "pds/analysis/distance.h"
+#include "pds/analysis/relative_radius.h"
+#include "pds/error.h"
+#include "pds/registry.h"
+#include "pds/samplers/random.h"
+
+namespace pds {
+namespace {
+
+double rho_of(const PointSet<2>& points, const Domain<2>& domain) {
+  return relative_radius(min_distance(points, domain).distance, domain.volume(), points.size(), 2);
+}
+
+// Sweep by sweep from white noise: the minimum distance (all pairs, not the
+// optimizer's own figure) never decreases, and the reported figures are the
+// set's.
+TEST(Fpo, MinimumDistanceNeverDecreasesAcrossSweeps) {
+  const Domain<2> domain = Domain<2>::torus({-2, 3}, {-1.5, 3.5});
+  PointSet<2> points = white_noise<2>({.count = 300}, domain, 3);
+  double last = min_distance_brute_force(points, domain).distance;
+  for (int sweep = 0; sweep < 12; ++sweep) {
+    const FpoResult r = fpo_optimize(points, domain, {.sweeps = 1, .tolerance = 0});
+    ASSERT_EQ(r.points.size(), points.size());
+    for (const auto& p : r.points) ASSERT_TRUE(domain.contains(p)) << p;
+    const double now = min_distance_brute_force(r.points, domain).distance;
+    EXPECT_GE(now, last) << "sweep " << sweep;
+    ASSERT_EQ(r.sweeps.size(), 2u);
+    EXPECT_EQ(r.sweeps[1].min_distance, now);
+    EXPECT_GT(r.sweeps[1].mean_nn_distance, r.sweeps[1].min_distance);
+    last = now;
+    points = r.points;
+  }
+}
+
+TEST(Fpo, ReachesTheOptimizedRelativeRadius) {
+  const auto domain = Domain<2>::unit(true);
+  const FpoResult r = fpo(1024, domain, {}, 1);
+  EXPECT_GE(rho_of(r.points, domain), 0.9);
+  for (std::size_t s = 1; s < r.sweeps.size(); ++s) EXPECT_GE(r.sweeps[s].min_distance, r.sweeps[s - 1].min_distance);
+  EXPECT_LE(r.sweeps.size(), 101u);
+  // The stop rule: a sweep that grows the minimum distance by less than the
+  // tolerance is the last.
+  const FpoResult early = fpo(1024, domain, {.sweeps = 100, .tolerance = 0.05}, 1);
+  ASSERT_LT(early.sweeps.size(), 101u);
+  const std::size_t last = early.sweeps.size() - 1;
+  EXPECT_LT(early.sweeps[last].min_distance, early.sweeps[last - 1].min_distance * 1.05);
+  for (std::size_t s = 1; s < last; ++s)
+    EXPECT_GE(early.sweeps[s].min_distance, early.sweeps[s - 1].min_distance * 1.05) << "sweep " << s;
+}
+
+TEST(Fpo, DeterministicAndThroughTheRegistry) {
+  GenerateRequest r;
+  r.count = 256;
+  r.torus = true;
+  r.seed = 5;
+  r.params["sweeps"] = 5;
+  const PointCloud a = generate("fpo", r), b = generate("fpo", r);
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a.size(), 256u);
+  r.params["start"] = 1;
+  EXPECT_EQ(generate("fpo", r).size(), 256u);
+  r.torus = false;
+  EXPECT_THROW(generate("fpo", r), InvalidArgument);
+}
+
+TEST(Fpo, InvalidInput) {
+  const auto torus = Domain<2>::unit(true);
+  EXPECT_THROW(fpo(1, torus, {}, 1), InvalidArgument);
+  EXPECT_THROW(fpo(10, Domain<2>::unit(false), {}, 1), InvalidArgument);
+  EXPECT_THROW(fpo(10, Domain<2>::torus({0, 0}, {1, 2}), {}, 1), InvalidArgument);
+  EXPECT_THROW(fpo(10, torus, {.sweeps = 0}, 1), InvalidArgument);
+  EXPECT_THROW(fpo_optimize({{0.1, 0.1}, {0.1, 0.1}, {0.5, 0.5}}, torus, {}), InvalidArgument);
+  EXPECT_THROW(fpo_optimize({{0.1, 0.1}, {1.0, 0.5}}, torus, {}), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace pds
