@@ -2,7 +2,6 @@
 
 import os
 import threading
-import time
 
 import numpy as np
 import pytest
@@ -28,38 +27,6 @@ def test_python_runs_while_the_library_samples():
         ticks += 1
     worker.join()
     assert ticks > 1000
-
-
-def best_of(runs, f):
-    best = np.inf
-    for _ in range(runs):
-        start = time.perf_counter()
-        f()
-        best = min(best, time.perf_counter() - start)
-    return best
-
-
-@pytest.mark.serial
-def test_two_threads_take_about_the_time_of_one():
-    load, cores = os.getloadavg()[0], os.cpu_count()
-    if cores < 2 or load > 1.5 * cores:
-        pytest.skip(f"needs two idle cores (load {load:.1f} on {cores} cores)")
-
-    def one():
-        pds.generate("bridson", radius=0.0025, seed=1, threads=1)
-
-    def two():
-        threads = [threading.Thread(target=one) for _ in range(2)]
-        for t in threads:
-            t.start()
-        for t in threads:
-            t.join()
-
-    single = best_of(3, one)
-    assert single > 0.05  # long enough to measure
-    ratio = best_of(3, two) / single
-    # Serialised by a lock the ratio would be 2; on two free cores it is about 1.
-    assert ratio < 1.6, f"two threads took {ratio:.2f}x one"
 
 
 def rss_kib():
