@@ -30,8 +30,10 @@
 // domain's min-image formula); away from the faces the min-image correction
 // provably never applies and is skipped. Neighbour cells are read nearest
 // first (own cell first), eight at a time with one branch, two cells a
-// vector; the rows a picked sample's candidates can touch are prefetched;
-// annulus offsets are drawn ahead in branch-free batches.
+// vector (their offsets are pds::GridNeighbourhood's, over the padded grid;
+// its wrap is not used: the margin leaves the scan plain index arithmetic);
+// the rows a picked sample's candidates can touch are prefetched; annulus
+// offsets are drawn ahead in branch-free batches.
 
 #include "pds/samplers/bridson.h"
 
@@ -106,9 +108,10 @@ class BridsonGrid {
       padded_box.lo[i] -= reach_ * extent_[i] / cells_[i];
       padded_box.hi[i] += reach_ * extent_[i] / cells_[i];
     }
-    // A local: `this` passed to the setup's out-of-line calls costs the hot
-    // loop (its members no longer stay in registers; 1.5% more instructions
-    // on a 3D torus, measured).
+    // A local, not a member: grow() inlines this constructor, and the code
+    // of its hot loop moved with what the setup did with `this` (callgrind,
+    // 3D torus: 1.5% more instructions with a member, 1.1% with a local, as
+    // much as an unrelated getenv() in this constructor moved it).
     const GridNeighbourhood<D> layout(padded_box, padded);
     for (int i = 0; i < D; ++i) {
       padded_[i] = padded[i];
