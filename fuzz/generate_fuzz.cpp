@@ -21,7 +21,7 @@ struct Bytes {
   T take() {
     T value{};
     const std::size_t n = size < sizeof(T) ? size : sizeof(T);
-    std::memcpy(&value, data, n);
+    if (n > 0) std::memcpy(&value, data, n);
     data += n;
     size -= n;
     return value;
