@@ -59,6 +59,10 @@ class GridNeighbourhood {
 
   GridNeighbourhood() = default;
   /// `cells` cells along each axis of the domain, of edge extent / cells.
+  /// The most cells a stencil reaches along an axis (a torus a 4096th of the
+  /// distance thin needs 4096 images of each cell).
+  static constexpr int kMaxStencilReach = 4096;
+
   GridNeighbourhood(const Domain<D>& domain, const Coords& cells) : periodic_(domain.periodic), cells_(cells) {
     std::size_t stride = 1;
     for (int a = 0; a < D; ++a) {
@@ -189,7 +193,19 @@ class GridNeighbourhood {
   Stencil stencil_within(double distance, double tolerance = 0.0) const {
     const double max_gap2 = distance * distance * (1.0 + tolerance);
     Coords reach;
-    for (int a = 0; a < D; ++a) reach[a] = static_cast<int>(std::ceil(distance / edge_[a])) + 1;
+    for (int a = 0; a < D; ++a) {
+      // In double first: an axis far shorter than the distance would overflow
+      // an int. A box has no cells beyond its own; a torus needs every image,
+      // and more than kMaxStencilReach of them is refused.
+      double r = std::ceil(distance / edge_[a]) + 1.0;
+      if (!periodic_) r = std::min(r, static_cast<double>(cells_[a]));
+      if (!(r <= kMaxStencilReach))
+        throw InvalidArgument("grid: distance " + detail::format_number(distance) + " spans more than " +
+                              std::to_string(kMaxStencilReach) + " cells of axis " + std::to_string(a) +
+                              " (a period of " + detail::format_number(edge_[a] * cells_[a]) +
+                              "): the domain is too thin for this radius");
+      reach[a] = static_cast<int>(r);
+    }
     std::vector<std::pair<double, Coords>> found;
     Coords o;
     for (int a = 0; a < D; ++a) o[a] = -reach[a];

@@ -11,6 +11,8 @@
 
 #include "pds/grid.h"
 #include "pds/rng.h"
+#include "pds/samplers/bridson.h"
+#include "pds/samplers/ebeida.h"
 #include "pds/samplers/random.h"
 
 namespace pds {
@@ -301,6 +303,25 @@ TEST(GridNeighbourhood, GridOnThinBoxesAndShortTori) {
     };
     check_grid<3>(make3({0, 0, 0}, {1, 0.01, 0.3}), 0.1, 4);
   }
+}
+
+}  // namespace
+}  // namespace pds
+
+namespace pds {
+namespace {
+
+// An axis 1e-140 wide under a radius of 0.1 (found by the generation
+// fuzzer: the reach overflowed an int). A box needs no cell beyond its own,
+// so the samplers work; a torus would need 10^139 images and is refused.
+TEST(GridNeighbourhood, AxesFarThinnerThanTheDistance) {
+  const Point<2> lo{{0.0, 0.0}}, hi{{1e-140, 1.0}};
+  // Bridson's annulus rarely lands in so thin a box (it is not maximal);
+  // ebeida fills it: about one sample per radius along the long axis.
+  EXPECT_GE(bridson<2>({.radius = 0.1}, Domain<2>::box(lo, hi), 1).size(), 1u);
+  EXPECT_GE(ebeida<2>({.radius = 0.1}, Domain<2>::box(lo, hi), 1).size(), 6u);
+  EXPECT_THROW(bridson<2>({.radius = 0.1}, Domain<2>::torus(lo, hi), 1), InvalidArgument);
+  EXPECT_THROW(ebeida<2>({.radius = 0.1}, Domain<2>::torus(lo, hi), 1), InvalidArgument);
 }
 
 }  // namespace

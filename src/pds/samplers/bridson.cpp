@@ -449,6 +449,14 @@ template <int D>
 void validate(const BridsonParams& params, const Domain<D>& domain) {
   domain.validate();
   require_radius(params.radius);
+  // A torus far thinner than the radius would need that many periodic images
+  // of every cell (the limit of the shared grid neighbourhood).
+  for (int a = 0; a < D && domain.periodic; ++a)
+    if (params.radius > GridNeighbourhood<D>::kMaxStencilReach * domain.extent(a))
+      throw InvalidArgument("bridson: on a torus every period must be at least radius / " +
+                            std::to_string(GridNeighbourhood<D>::kMaxStencilReach) + "; axis " + std::to_string(a) +
+                            " has " + detail::format_number(domain.extent(a)) + " for radius " +
+                            detail::format_number(params.radius));
   if (params.k < 1) throw InvalidArgument("bridson: k must be at least 1, got " + std::to_string(params.k));
   if (params.count) {
     if (*params.count == 0) throw InvalidArgument("bridson: count must be at least 1, got 0");
