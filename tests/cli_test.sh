@@ -41,6 +41,7 @@ expect_exit 2 "radius must be positive and finite, got -1" -- generate regular -
 expect_exit 2 "radius must be positive and finite, got inf" -- generate regular --radius inf
 expect_exit 2 "radius 1e-160 is outside [1e-150, 1e150]" -- generate dunbar-humphreys --radius 1e-160 --bounds 0,0,1e-140,1e-140
 expect_exit 2 "axis 0 has extent 1e-158, outside [1e-150, 1e150]" -- generate bridson --radius 0.1 --bounds 0,0,1e-158,1
+expect_exit 2 "more than 10^6 times thinner than the radius 0.1" -- generate dart-throwing --radius 0.1 --bounds 0,0,1e-100,1
 expect_exit 2 "count must be at least 1, got 0" -- generate random --count 0
 expect_exit 2 "above the cap" -- generate random --count 200000000
 expect_exit 2 "above the cap of 1000" -- generate regular --radius 0.001 --max-points 1000

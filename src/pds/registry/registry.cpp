@@ -93,6 +93,14 @@ void validate(const Method& m, const GenerateRequest& r) {
     if (r.radius) {
       if (!m.takes_radius) throw InvalidArgument(m.name + " does not take --radius (use --count)");
       require_radius_budget(domain, *r.radius, r.max_points);
+      // An axis a million times thinner than the radius is a lower-dimensional
+      // set in disguise; dart throwing ran for minutes on one 1e-100 wide.
+      for (int a = 0; a < D; ++a)
+        if (*r.radius > 1e6 * domain.extent(a))
+          throw InvalidArgument("bounds: axis " + std::to_string(a) + " is " +
+                                detail::format_number(domain.extent(a)) +
+                                " wide, more than 10^6 times thinner than the radius " +
+                                detail::format_number(*r.radius) + " (sample in fewer dimensions)");
     }
     return 0;
   });
