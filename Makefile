@@ -76,7 +76,8 @@ fuzz: san-build
 	  mkdir -p $(SAN_BUILD)/corpus/$$t; \
 	  echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
 	  (cd $(SAN_BUILD) && $(SAN_ENV) ./fuzz/$${t}_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
-	    -print_final_stats=1 corpus/$$t ../$$corpus 2>&1 | tail -6) || exit 1; \
+	    -print_final_stats=1 corpus/$$t ../$$corpus > fuzz-$$t.log 2>&1) \
+	    && tail -6 $(SAN_BUILD)/fuzz-$$t.log || { tail -60 $(SAN_BUILD)/fuzz-$$t.log; exit 1; }; \
 	done
 
 clean:

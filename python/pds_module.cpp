@@ -61,7 +61,7 @@ pds::Domain<D> make_domain(const std::vector<double>& lo, const std::vector<doub
 
 /// The dimension of an (N, D) array of points; throws InvalidArgument otherwise.
 int dim_of(const InputArray& a, const std::string& what) {
-  if (a.ndim() != 2 || a.shape(1) < pds::kMinDim || a.shape(1) > pds::kMaxDim)
+  if (a.ndim() != 2 || a.shape(1) < pds::kPlaneDim || a.shape(1) > pds::kSpaceDim)
     throw pds::InvalidArgument(what + " must be an array of shape (N, 2) or (N, 3), got " + std::to_string(a.ndim()) +
                                " dimension(s)" +
                                (a.ndim() == 2 ? " with " + std::to_string(a.shape(1)) + " columns" : ""));
@@ -133,7 +133,7 @@ py::list methods() {
                         py::arg("min_distance") = m.min_distance, py::arg("maximal") = m.maximal,
                         py::arg("exact_count") = m.exact_count, py::arg("progressive") = m.progressive,
                         py::arg("deterministic") = m.deterministic, py::arg("square_torus_only") = m.square_torus_only,
-                        py::arg("dims") = m.dims, py::arg("params") = params));
+                        py::arg("dims") = py::module_::import("builtins").attr("range")(m.dims.lo, m.dims.hi + 1), py::arg("params") = params));
   }
   return out;
 }

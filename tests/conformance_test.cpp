@@ -38,7 +38,7 @@ std::string case_name(const ::testing::TestParamInfo<Case>& info) {
 std::vector<Case> all_cases(bool spaced_only = false) {
   std::vector<Case> cases;
   for (const Method& m : methods())
-    for (int dim : m.dims)
+    for (int dim : m.dims.tested())
       for (bool torus : {false, true}) {
         if (m.square_torus_only && !torus) continue;
         if (m.takes_count && !spaced_only) {

@@ -9,7 +9,7 @@
 namespace pds::cli {
 
 void add_domain_options(CLI::App& command, DomainOptions& options, bool dim_option) {
-  if (dim_option) command.add_option("--dim,-d", options.dim, "Dimension (2 or 3)")->capture_default_str();
+  if (dim_option) command.add_option("--dim,-d", options.dim, "Dimension (each method's range: pds methods)")->capture_default_str();
   command.add_flag("--torus", options.torus, "Periodic domain: distances wrap around the bounds");
   command
       .add_option("--bounds", options.bounds,
@@ -77,8 +77,8 @@ std::string methods_markdown() {
         "| method | family | what it makes | sizing | dims | guarantees | parameters (default) | reference | page |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
   for (const Method& m : methods()) {
-    std::string dims, params;
-    for (int d : m.dims) dims += (dims.empty() ? "" : ", ") + std::to_string(d);
+    std::string params;
+    const std::string dims = m.dims.text();
     for (const MethodParam& p : m.params) {
       std::ostringstream v;
       v << p.default_value;

@@ -13,6 +13,24 @@
 
 namespace pds {
 
+/// Throws InvalidArgument unless lo and hi are finite, hi > lo, and the
+/// extent lies in [1e-150, 1e150], the range of radii (limits.h): squared
+/// distances across the domain then stay normal doubles, and a width of a
+/// few denormals (which no grid can divide) or one that overflows to
+/// infinity is refused here rather than deep inside a sampler.
+inline void validate_axis(int axis, double lo, double hi) {
+  const auto format = [](double v) { return detail::format_number(v); };
+  if (!std::isfinite(lo) || !std::isfinite(hi))
+    throw InvalidArgument("bounds: axis " + std::to_string(axis) + " has a non-finite bound");
+  if (!(hi > lo))
+    throw InvalidArgument("bounds: axis " + std::to_string(axis) + " is empty (lo " + format(lo) + " >= hi " +
+                          format(hi) + ")");
+  const double extent = hi - lo;
+  if (!(extent >= 1e-150 && extent <= 1e150))
+    throw InvalidArgument("bounds: axis " + std::to_string(axis) + " has extent " + format(extent) +
+                          ", outside [1e-150, 1e150] (scale the domain)");
+}
+
 template <int D>
 struct Domain {
   Point<D> lo{};
@@ -78,29 +96,14 @@ struct Domain {
     return p;
   }
 
-  /// Throws InvalidArgument unless every bound is finite, hi > lo, and every
-  /// extent lies in [1e-150, 1e150], the range of radii (limits.h): squared
-  /// distances across the domain then stay normal doubles, and a width of a
-  /// few denormals (which no grid can divide) or one that overflows to
-  /// infinity is refused here rather than deep inside a sampler.
+  /// validate_axis() for every axis.
   void validate() const {
-    for (int i = 0; i < D; ++i) {
-      if (!std::isfinite(lo[i]) || !std::isfinite(hi[i]))
-        throw InvalidArgument("bounds: axis " + std::to_string(i) + " has a non-finite bound");
-      if (!(hi[i] > lo[i]))
-        throw InvalidArgument("bounds: axis " + std::to_string(i) + " is empty (lo " + format(lo[i]) + " >= hi " +
-                              format(hi[i]) + ")");
-      const double extent = hi[i] - lo[i];
-      if (!(extent >= 1e-150 && extent <= 1e150))
-        throw InvalidArgument("bounds: axis " + std::to_string(i) + " has extent " + format(extent) +
-                              ", outside [1e-150, 1e150] (scale the domain)");
-    }
+    for (int i = 0; i < D; ++i) validate_axis(i, lo[i], hi[i]);
   }
 
   bool operator==(const Domain&) const = default;
 
  private:
-  static std::string format(double v) { return detail::format_number(v); }
   static Point<D> filled(double v) {
     Point<D> p;
     p.fill(v);

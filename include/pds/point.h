@@ -11,10 +11,17 @@
 
 namespace pds {
 
-/// Dimensions the registry, the command line and the file formats accept. The
-/// templates are written for any D; these are the ones instantiated.
-inline constexpr int kMinDim = 2;
-inline constexpr int kMaxDim = 3;
+/// The dimensions a typed Point<D> is instantiated for: the Poisson disk
+/// samplers whose papers are dimension-generic and the analysis run in all of
+/// them (docs/dimensions.md). Most other typed code is instantiated for the
+/// plane and space only (visit_dim's default range).
+inline constexpr int kMinDim = 1;
+inline constexpr int kMaxDim = 8;
+inline constexpr int kPlaneDim = 2;
+inline constexpr int kSpaceDim = 3;
+/// The widest point a file or a PointCloud may hold: sequences and designs
+/// are made in run-time dimensions up to Sobol's 21,201 and beyond.
+inline constexpr int kMaxCloudDim = 1 << 20;
 
 /// A point is a std::array of its coordinates; the derived type lets
 /// templates deduce D (std::array's size is a size_t).
@@ -62,8 +69,11 @@ struct PointCloud {
   bool operator==(const PointCloud&) const = default;
 };
 
-/// Calls f(std::integral_constant<int, D>{}) for the run-time dimension dim.
-/// Throws InvalidArgument (via the caller's check) for unsupported ones.
+/// Calls f(std::integral_constant<int, D>{}) for the run-time dimension dim,
+/// D in [Lo, Hi] (within [kMinDim, kMaxDim]); throws InvalidArgument naming
+/// the range for any other dim. Without a range: the plane and space (2, 3).
+template <int Lo, int Hi, class F>
+decltype(auto) visit_dim(int dim, F&& f);
 template <class F>
 decltype(auto) visit_dim(int dim, F&& f);
 

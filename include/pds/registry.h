@@ -49,6 +49,9 @@ struct GenerateRequest {
 
   template <int D>
   Domain<D> domain() const;
+  /// The request's bounds in any dimension (empty lo/hi: the unit cube),
+  /// validated as Domain<D>::validate does; throws InvalidArgument.
+  void bounds(std::vector<double>& lo_out, std::vector<double>& hi_out) const;
   /// The value of a method parameter, or its default.
   double param(const std::string& name, double fallback) const;
 };
@@ -77,6 +80,20 @@ struct RhoBand {
   double lo = 0, hi = 0;
 };
 
+/// The dimensions a method runs in, both ends included.
+struct DimRange {
+  int lo = kPlaneDim, hi = kSpaceDim;
+  constexpr DimRange() = default;
+  constexpr DimRange(int first, int last) : lo(first), hi(last) {}  // both ends: no {2} meaning 2-3
+  bool contains(int dim) const { return dim >= lo && dim <= hi; }
+  /// "2", "2-3", "1-21201": for --help, pds methods and error messages.
+  std::string text() const { return lo == hi ? std::to_string(lo) : std::to_string(lo) + "-" + std::to_string(hi); }
+  /// The dimensions tests run a method in: all of them up to kMaxDim, then
+  /// a few far ones (run-time dimensions are one code path).
+  std::vector<int> tested() const;
+  bool operator==(const DimRange&) const = default;
+};
+
 struct Method {
   std::string name;
   Family family = Family::white_noise;
@@ -92,7 +109,7 @@ struct Method {
   bool deterministic = false;      // ignores the seed
   bool compare = false;            // one of `pds compare`'s default rows
   bool square_torus_only = false;  // runs on tori with equal periods only (generate() refuses the rest)
-  std::vector<int> dims{2, 3};
+  DimRange dims;
   std::vector<RhoBand> rho;  // expected relative radius, where measured
   std::vector<MethodParam> params;
   /// Runs the method on a request that generate() has already validated.
@@ -128,10 +145,12 @@ inline constexpr double kCountRelativeRadius = 0.75;
 GenerateRequest size_request(const Method& method, GenerateRequest request);
 
 /// Calls f(domain) with the request's typed Domain<D> and packs the returned
-/// PointSet<D>; the glue between a typed sampler and the registry.
-template <class F>
+/// PointSet<D>; the glue between a typed sampler and the registry. Lo, Hi:
+/// the dimensions the sampler is instantiated for (the plane and space unless
+/// said otherwise).
+template <int Lo = kPlaneDim, int Hi = kSpaceDim, class F>
 PointCloud run_typed(const GenerateRequest& request, F&& f) {
-  return visit_dim(request.dim, [&](auto d) {
+  return visit_dim<Lo, Hi>(request.dim, [&](auto d) {
     constexpr int D = decltype(d)::value;
     return PointCloud::from<D>(f(request.domain<D>()));
   });

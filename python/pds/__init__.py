@@ -323,12 +323,16 @@ def render(
     )
 
 
+def _dims_text(dims):
+    return str(dims.start) if len(dims) == 1 else f"{dims.start}-{dims[-1]}"
+
+
 def _methods_text():
     lines = ["", "    Methods:"]
     for m in _METHODS:
         sizing = " or ".join(s for s, on in (("count", m["takes_count"]), ("radius", m["takes_radius"])) if on)
         lines.append(f"      {m['name']:<18}{m['summary']}")
-        lines.append(f"      {'':<18}takes {sizing}; dims {', '.join(map(str, m['dims']))}")
+        lines.append(f"      {'':<18}takes {sizing}; dims {_dims_text(m['dims'])}")
         for p in m["params"]:
             lines.append(f"      {'':<18}{p['name'].replace('-', '_')}={p['default']:g}  {p['help']}")
     return "\n".join(lines)

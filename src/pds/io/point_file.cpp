@@ -35,9 +35,9 @@ std::string extension_of(const std::string& path) {
 }
 
 void check_dim(int dim, const std::string& where) {
-  if (dim < kMinDim || dim > kMaxDim)
-    throw InvalidArgument(where + ": " + std::to_string(dim) + " coordinates per point; supported: " +
-                          std::to_string(kMinDim) + " to " + std::to_string(kMaxDim));
+  if (dim < 1 || dim > kMaxCloudDim)
+    throw InvalidArgument(where + ": " + std::to_string(dim) + " coordinates per point; supported: 1 to " +
+                          std::to_string(kMaxCloudDim));
 }
 
 std::string_view trim(std::string_view s) {
@@ -186,7 +186,7 @@ PointCloud read_npy(std::istream& in, const std::string& name) {
   }
   if (dims.size() != 2) bad_file(name, "NPY shape " + shape + " is not (N, D)");
   const std::uint64_t n = dims[0];
-  const int dim = dims[1] > 64 ? 0 : static_cast<int>(dims[1]);
+  const int dim = dims[1] > static_cast<std::uint64_t>(kMaxCloudDim) ? 0 : static_cast<int>(dims[1]);
   check_dim(dim, name);
   if (n > std::numeric_limits<std::uint64_t>::max() / (item * dim) || n * item * dim > (std::uint64_t{1} << 40))
     bad_file(name, "NPY shape " + shape + " is too large");

@@ -128,12 +128,23 @@ TEST_F(PointFiles, MalformedCsvNamesTheFileAndLine) {
   expect_error(path("nan.csv"), "nan.csv:2: non-finite");
   write_text("empty.csv", "");
   expect_error(path("empty.csv"), "empty file");
-  write_text("dim1.csv", "x\n0.5\n");
-  expect_error(path("dim1.csv"), "1 coordinates per point");
   write_text("trailing.csv", "x,y\n0.1,0.2x\n");
   expect_error(path("trailing.csv"), "trailing.csv:2");
   expect_error(path("missing.csv"), "cannot open");
   expect_error(path("points.txt"), "unknown point file extension");
+}
+
+TEST_F(PointFiles, AnyWidthFromOneColumnToThousands) {
+  write_text("dim1.csv", "x\n0.5\n0.25\n");
+  const PointCloud line = read_points(path("dim1.csv"));
+  EXPECT_EQ(line.dim, 1);
+  EXPECT_EQ(line.coords, (std::vector<double>{0.5, 0.25}));
+  PointCloud wide{3000, std::vector<double>(2 * 3000)};
+  for (std::size_t i = 0; i < wide.coords.size(); ++i) wide.coords[i] = static_cast<double>(i % 997) / 997.0;
+  for (const char* name : {"wide.csv", "wide.npy"}) {
+    write_points(path(name), wide);
+    EXPECT_EQ(read_points(path(name)), wide) << name;
+  }
 }
 
 TEST_F(PointFiles, CsvAcceptsCommentsNoHeaderAndCrlf) {

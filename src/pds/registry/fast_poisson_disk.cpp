@@ -22,7 +22,7 @@ const Method& dunbar_humphreys_method() {
       .min_distance = true,
       .maximal = true,
       .compare = true,
-      .dims = {2},
+      .dims = {2, 2},
       // Measured over seeds 1-5 (variant 0, boundary sampling, denser than dart
       // throwing): box 0.880-0.885, torus 0.871-0.873.
       .rho = {{2, false, 0.02, 0.86, 0.90}, {2, true, 0.02, 0.85, 0.89}},

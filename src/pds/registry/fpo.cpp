@@ -21,7 +21,7 @@ const Method& fpo_method() {
       .takes_count = true,
       .exact_count = true,
       .square_torus_only = true,
-      .dims = {2},
+      .dims = {2, 2},
       .params = {{"sweeps", 100, 1, 100000, true, "most sweeps (each moves every point once)"},
                  {"tolerance", 1e-4, 0, 1, false,
                   "stop after a sweep that grows the minimum distance by less than this fraction"},

@@ -21,7 +21,7 @@ const Method& jones_method() {
       .min_distance = true,
       .maximal = true,
       .compare = true,
-      .dims = {2},
+      .dims = {2, 2},
       // Measured over seeds 1-5: box 0.783-0.789, torus 0.775-0.780.
       .rho = {{2, false, 0.02, 0.76, 0.81}, {2, true, 0.02, 0.755, 0.80}},
       .run =

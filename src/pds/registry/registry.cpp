@@ -67,6 +67,32 @@ const Method& find_method(const std::string& name) {
   throw InvalidArgument("unknown method '" + name + "' (known: " + known + ")");
 }
 
+std::vector<int> DimRange::tested() const {
+  std::vector<int> dims;
+  for (int d = lo; d <= hi && d <= kMaxDim; ++d) dims.push_back(d);
+  for (int d : {hi > 64 ? 64 : 0, hi > 1000 ? 1000 : 0, hi > kMaxDim ? hi : 0})
+    if (d > kMaxDim && d >= lo) dims.push_back(d);
+  return dims;
+}
+
+void GenerateRequest::bounds(std::vector<double>& lo_out, std::vector<double>& hi_out) const {
+  if (dim < 1 || dim > kMaxCloudDim)
+    throw InvalidArgument("dimension " + std::to_string(dim) + " is not supported (supported: 1 to " +
+                          std::to_string(kMaxCloudDim) + ")");
+  const auto n = static_cast<std::size_t>(dim);
+  if (lo.empty() && hi.empty()) {
+    lo_out.assign(n, 0.0);
+    hi_out.assign(n, 1.0);
+    return;
+  }
+  if (lo.size() != n || hi.size() != n)
+    throw InvalidArgument("bounds: need " + std::to_string(dim) + " lower and " + std::to_string(dim) +
+                          " upper values for dimension " + std::to_string(dim));
+  for (std::size_t i = 0; i < n; ++i) validate_axis(static_cast<int>(i), lo[i], hi[i]);
+  lo_out = lo;
+  hi_out = hi;
+}
+
 double GenerateRequest::param(const std::string& name, double fallback) const {
   const auto it = params.find(name);
   return it == params.end() ? fallback : it->second;
@@ -75,13 +101,15 @@ double GenerateRequest::param(const std::string& name, double fallback) const {
 namespace {
 
 void validate(const Method& m, const GenerateRequest& r) {
-  if (std::find(m.dims.begin(), m.dims.end(), r.dim) == m.dims.end()) {
-    std::string dims;
-    for (int d : m.dims) dims += (dims.empty() ? "" : ", ") + std::to_string(d);
-    throw InvalidArgument(m.name + ": dimension " + std::to_string(r.dim) + " is not supported (supported: " + dims +
-                          ")");
-  }
-  visit_dim(r.dim, [&](auto d) {
+  if (!m.dims.contains(r.dim))
+    throw InvalidArgument(m.name + ": dimension " + std::to_string(r.dim) + " is not supported (supported: " +
+                          m.dims.text() + ")");
+  if (r.dim > kMaxDim) {
+    // Run-time dimensions: sequences and designs, which take a count only.
+    std::vector<double> lo, hi;
+    r.bounds(lo, hi);
+    if (r.radius) throw InvalidArgument(m.name + " does not take --radius (use --count)");
+  } else visit_dim<kMinDim, kMaxDim>(r.dim, [&](auto d) {
     constexpr int D = decltype(d)::value;
     const Domain<D> domain = r.domain<D>();  // validates the bounds
     if (m.square_torus_only) {

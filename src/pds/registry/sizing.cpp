@@ -8,7 +8,7 @@ namespace pds {
 
 GenerateRequest size_request(const Method& method, GenerateRequest request) {
   if (!request.count || request.radius || method.takes_count || !method.takes_radius) return request;
-  request.radius = visit_dim(request.dim, [&](auto d) {
+  request.radius = visit_dim<kMinDim, kMaxDim>(request.dim, [&](auto d) {
     constexpr int D = decltype(d)::value;
     return radius_for_count(*request.count, request.domain<D>(), kCountRelativeRadius);
   });

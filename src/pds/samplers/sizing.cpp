@@ -26,9 +26,17 @@ void require_count_fits(const char* method, std::uint64_t count, double radius, 
                           detail::format_number(most) + "); ask for fewer points or a smaller radius");
 }
 
-template double radius_for_count<2>(std::uint64_t, const Domain<2>&, double);
-template double radius_for_count<3>(std::uint64_t, const Domain<3>&, double);
-template void require_count_fits<2>(const char*, std::uint64_t, double, const Domain<2>&);
-template void require_count_fits<3>(const char*, std::uint64_t, double, const Domain<3>&);
+#define PDS_INSTANTIATE(D)                                                           \
+  template double radius_for_count<D>(std::uint64_t, const Domain<D>&, double); \
+  template void require_count_fits<D>(const char*, std::uint64_t, double, const Domain<D>&);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

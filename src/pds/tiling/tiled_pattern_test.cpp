@@ -110,7 +110,7 @@ TEST(TiledPattern, SeamsKeepTheTileMinimumDistance) {
   // Every 2D method of the registry, run on the torus: the tiled plane's
   // closest pair is the tile's toroidal closest pair, scaled by S.
   for (const Method& m : methods()) {
-    if (std::find(m.dims.begin(), m.dims.end(), 2) == m.dims.end()) continue;
+    if (!m.dims.contains(2)) continue;
     GenerateRequest request;
     request.torus = true;
     request.seed = 4;
