@@ -33,6 +33,7 @@ const Method& dart_throwing_method() {
       // Measured over seeds 1-5: 2D box 0.758-0.761, torus 0.750-0.753; 3D box
       // 0.795-0.803, torus 0.762-0.764 (random sequential adsorption jams at
       // 0.777 in 2D, 0.803 in 3D; a finite failure bound stops a little below).
+      .dims = {kMinDim, kMaxDim},
       .rho = {{2, false, 0.02, 0.74, 0.78},
               {2, true, 0.02, 0.73, 0.77},
               {3, false, 0.08, 0.77, 0.83},
@@ -44,7 +45,7 @@ const Method& dart_throwing_method() {
                   "relative radius that sets the radius for --count without --radius"}},
       .run =
           [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
+            return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               DartThrowingParams params;
               params.count = r.count;
               params.radius = r.radius ? *r.radius : radius_for_count(*r.count, domain, r.param("rho", kDartCountRho));
@@ -71,6 +72,7 @@ const Method& bridson_method() {
       .compare = true,
       // Measured over seeds 1-5: 2D box 0.732-0.739, torus 0.728-0.732; 3D box
       // 0.762-0.769, torus 0.738-0.745 (k = 30 leaves more gaps).
+      .dims = {kMinDim, kMaxDim},
       .rho = {{2, false, 0.02, 0.71, 0.76},
               {2, true, 0.02, 0.71, 0.75},
               {3, false, 0.08, 0.74, 0.79},
@@ -80,7 +82,7 @@ const Method& bridson_method() {
                   "relative radius that sets the radius for --count without --radius"}},
       .run =
           [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
+            return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               BridsonParams params;
               params.k = static_cast<int>(r.param("k", 30));
               params.count = r.count;
@@ -121,6 +123,7 @@ const Method& best_candidate_method() {
       // Measured over seeds 1-5 (m = 10; it stops at the first round whose best
       // candidate is closer than the radius): 2D box 0.746-0.750, torus
       // 0.729-0.740; 3D at r = 0.1, box 0.791-0.801, torus 0.747-0.749.
+      .dims = {kMinDim, kSpaceDim},
       .rho = {{2, false, 0.02, 0.71, 0.78},
               {2, true, 0.02, 0.70, 0.77},
               {3, false, 0.1, 0.76, 0.83},
@@ -128,7 +131,7 @@ const Method& best_candidate_method() {
       .params = {{"m", kBestCandidateDefaultM, 1, 1000, true, "candidates per sample already placed"}},
       .run =
           [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
+            return run_typed<kMinDim, kSpaceDim>(r, [&](const auto& domain) {
               BestCandidateParams params;
               params.count = r.count;
               params.radius = r.radius;

@@ -748,7 +748,12 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   return result;
 }
 
-template BestCandidateResult<2> best_candidate_run<2>(const BestCandidateParams&, const Domain<2>&, std::uint64_t);
-template BestCandidateResult<3> best_candidate_run<3>(const BestCandidateParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D)                                                                      \
+  template BestCandidateResult<D> best_candidate_run<D>(const BestCandidateParams&, const Domain<D>&, \
+                                                        std::uint64_t);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

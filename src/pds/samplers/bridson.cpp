@@ -42,6 +42,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -53,6 +54,7 @@
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/sizing.h"
+#include "pds/detail/instantiate.h"
 
 namespace pds {
 namespace {
@@ -366,9 +368,27 @@ class AnnulusOffsets {
   std::array<Point<D>, kBatch + 1> batch_;  // one spare slot for the last rejected draw
 };
 
+// From 4 dimensions the specialised grid's block of (2 sqrt(D) + 1)^D cells
+// around a candidate outgrows everything else: there the shared grid with
+// cells of edge r and a pruned walk (Grid::for_conflicts) answers instead
+// (docs/dimensions.md has the measurements).
+template <int D>
+class ConflictGrid {
+ public:
+  ConflictGrid(const Domain<D>& domain, double radius)
+      : grid_(Grid<D>::for_conflicts(domain, radius)), radius_(radius) {}
+  bool is_free(const Point<D>& p, std::size_t&) const { return !grid_.any_closer_than(p, radius_); }
+  void insert(const Point<D>& p, std::size_t) { grid_.insert(p); }
+  void prefetch_around(const Point<D>&) const {}
+
+ private:
+  Grid<D> grid_;
+  double radius_;
+};
+
 template <int D, bool Periodic>
 PointSet<D> grow(const Domain<D>& domain, double radius, int k, std::uint64_t seed) {
-  BridsonGrid<D, Periodic> grid(domain, radius);
+  std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius);
   Rng rng(seed);
   bool short_reach = true;
   for (int i = 0; i < D; ++i) short_reach &= 2.0 * radius < domain.extent(i);
@@ -479,7 +499,8 @@ PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::u
   return thin(points, *params.count, seed);
 }
 
-template PointSet<2> bridson<2>(const BridsonParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> bridson<3>(const BridsonParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) template PointSet<D> bridson<D>(const BridsonParams&, const Domain<D>&, std::uint64_t);
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

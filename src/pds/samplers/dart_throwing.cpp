@@ -20,7 +20,8 @@
 //
 // Complexity: the literal version checks every accepted sample, O(N) a dart;
 // the grid version checks the few cells within the radius (background grid of
-// edge radius/sqrt(D)), O(1) a dart. Both take the same decisions on the same
+// edge radius/sqrt(D) in 2D and 3D, radius from 4D: Grid::for_conflicts), O(1)
+// a dart. Both take the same decisions on the same
 // random stream, so their outputs are identical; a test shows it.
 
 #include "pds/samplers/dart_throwing.h"
@@ -37,6 +38,7 @@
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/sizing.h"
+#include "pds/detail/instantiate.h"
 
 namespace pds {
 namespace {
@@ -64,7 +66,8 @@ class AllPairsCheck {
 template <int D>
 class GridCheck {
  public:
-  GridCheck(const Domain<D>& domain, double radius) : grid_(Grid<D>::for_radius(domain, radius)), radius_(radius) {}
+  GridCheck(const Domain<D>& domain, double radius)
+      : grid_(Grid<D>::for_conflicts(domain, radius)), radius_(radius) {}
   bool is_free(const Point<D>& p) const { return !grid_.any_closer_than(p, radius_); }
   void add(const Point<D>& p) { grid_.insert(p); }
   PointSet<D> take() { return grid_.points(); }
@@ -119,9 +122,10 @@ PointSet<D> dart_throwing(const DartThrowingParams& params, const Domain<D>& dom
                           : throw_darts<D, GridCheck<D>>(params, domain, seed);
 }
 
-template PointSet<2> dart_throwing<2>(const DartThrowingParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> dart_throwing<3>(const DartThrowingParams&, const Domain<3>&, std::uint64_t);
-template std::uint64_t default_dart_failures<2>(const Domain<2>&, double);
-template std::uint64_t default_dart_failures<3>(const Domain<3>&, double);
+#define PDS_INSTANTIATE(D)                                                                      \
+  template PointSet<D> dart_throwing<D>(const DartThrowingParams&, const Domain<D>&, std::uint64_t); \
+  template std::uint64_t default_dart_failures<D>(const Domain<D>&, double);
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -46,6 +46,7 @@
 #include "pds/samplers/ebeida.h"
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -368,7 +369,7 @@ class EbeidaSampler {
         // A child is covered when its farthest corner is inside one disk: the
         // sum over axes of the larger squared distance to its two faces (the
         // slack in cover2_ absorbs the rounding of these relative coordinates).
-        unsigned covered = 0;
+        std::bitset<kChildren> covered;  // 2^D children: 256 in 8D
         for (const auto& d : near) {
           std::array<std::array<double, 2>, D> far;
           for (int a = 0; a < D; ++a) {
@@ -380,12 +381,12 @@ class EbeidaSampler {
           for (int child = 0; child < kChildren; ++child) {
             double far2 = 0.0;
             for (int a = 0; a < D; ++a) far2 += far[a][(child >> a) & 1];
-            if (far2 < cover2_) covered |= 1u << child;
+            if (far2 < cover2_) covered.set(child);
           }
-          if (covered == (1u << kChildren) - 1) break;
+          if (covered.all()) break;
         }
         for (int child = 0; child < kChildren; ++child) {
-          if (covered >> child & 1) continue;
+          if (covered.test(child)) continue;
           Code code = 0;
           for (int a = 0; a < D; ++a) {
             const Code i = ((parent >> (a * parent_level)) & parent_mask) * 2 + ((child >> a) & 1);
@@ -442,7 +443,11 @@ PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uin
   return EbeidaSampler<D>(params, domain, seed).run();
 }
 
-template PointSet<2> ebeida<2>(const EbeidaParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> ebeida<3>(const EbeidaParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) template PointSet<D> ebeida<D>(const EbeidaParams&, const Domain<D>&, std::uint64_t);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

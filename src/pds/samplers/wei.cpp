@@ -628,7 +628,11 @@ PointSet<D> wei(const WeiParams& params, const Domain<D>& domain, std::uint64_t 
   return WeiSampler<D>(params, domain, seed).run();
 }
 
-template PointSet<2> wei<2>(const WeiParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> wei<3>(const WeiParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) template PointSet<D> wei<D>(const WeiParams&, const Domain<D>&, std::uint64_t);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds
