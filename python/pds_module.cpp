@@ -15,13 +15,16 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <cstring>
+#include <span>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "pds/analysis/discrepancy.h"
+#include "pds/analysis/distance.h"
 #include "pds/analysis/pair_correlation.h"
 #include "pds/analysis/report.h"
 #include "pds/analysis/spectrum.h"
@@ -59,13 +62,28 @@ pds::Domain<D> make_domain(const std::vector<double>& lo, const std::vector<doub
   return spec.domain<D>();
 }
 
-/// The dimension of an (N, D) array of points; throws InvalidArgument otherwise.
+/// The dimension of an (N, D) array of points, D >= 1 (each function says
+/// which D it takes); throws InvalidArgument otherwise.
 int dim_of(const InputArray& a, const std::string& what) {
-  if (a.ndim() != 2 || a.shape(1) < pds::kPlaneDim || a.shape(1) > pds::kSpaceDim)
-    throw pds::InvalidArgument(what + " must be an array of shape (N, 2) or (N, 3), got " + std::to_string(a.ndim()) +
+  if (a.ndim() != 2 || a.shape(1) < 1 || a.shape(1) > pds::kMaxCloudDim)
+    throw pds::InvalidArgument(what + " must be an array of shape (N, D), got " + std::to_string(a.ndim()) +
                                " dimension(s)" +
                                (a.ndim() == 2 ? " with " + std::to_string(a.shape(1)) + " columns" : ""));
   return static_cast<int>(a.shape(1));
+}
+
+pds::PointCloud to_cloud(const InputArray& a) {
+  pds::PointCloud cloud{dim_of(a, "points"), {}};
+  cloud.coords.assign(a.data(), a.data() + a.size());
+  return cloud;
+}
+
+/// Empty bounds: the unit cube of `dim` dimensions.
+void unit_if_empty(int dim, std::vector<double>& lo, std::vector<double>& hi) {
+  if (lo.empty() && hi.empty()) {
+    lo.assign(static_cast<std::size_t>(dim), 0.0);
+    hi.assign(static_cast<std::size_t>(dim), 1.0);
+  }
 }
 
 template <int D>
@@ -83,6 +101,15 @@ int dim_of_sets(const std::vector<InputArray>& sets) {
   for (const InputArray& s : sets)
     if (dim_of(s, "points") != dim)
       throw pds::InvalidArgument("points: every set needs the same dimension (" + std::to_string(dim) + ")");
+  return dim;
+}
+
+/// The same for the spectra and the pair correlation, measured in 2D and 3D only.
+int plane_or_space_dim_of_sets(const std::vector<InputArray>& sets) {
+  const int dim = dim_of_sets(sets);
+  if (dim != pds::kPlaneDim && dim != pds::kSpaceDim)
+    throw pds::InvalidArgument("points must be arrays of shape (N, 2) or (N, 3) (spectra and the pair correlation "
+                               "are measured in 2D and 3D only), got " + std::to_string(dim) + " columns");
   return dim;
 }
 
@@ -140,7 +167,7 @@ py::list methods() {
 
 py::array_t<double> periodogram(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
                                 const std::vector<double>& hi, bool torus, int max_frequency) {
-  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+  return pds::visit_dim(plane_or_space_dim_of_sets(arrays), [&](auto d) {
     constexpr int D = decltype(d)::value;
     const auto sets = to_sets<D>(arrays);
     const auto domain = make_domain<D>(lo, hi, torus);
@@ -156,7 +183,7 @@ py::array_t<double> periodogram(const std::vector<InputArray>& arrays, const std
 
 py::tuple radial_power(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
                        const std::vector<double>& hi, bool torus, int max_frequency) {
-  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+  return pds::visit_dim(plane_or_space_dim_of_sets(arrays), [&](auto d) {
     constexpr int D = decltype(d)::value;
     const auto sets = to_sets<D>(arrays);
     const auto domain = make_domain<D>(lo, hi, torus);
@@ -173,7 +200,7 @@ py::tuple radial_power(const std::vector<InputArray>& arrays, const std::vector<
 
 py::tuple pair_correlation(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
                            const std::vector<double>& hi, bool torus, double r_max, double bandwidth, int steps) {
-  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+  return pds::visit_dim(plane_or_space_dim_of_sets(arrays), [&](auto d) {
     constexpr int D = decltype(d)::value;
     const auto sets = to_sets<D>(arrays);
     const auto domain = make_domain<D>(lo, hi, torus);
@@ -187,17 +214,36 @@ py::tuple pair_correlation(const std::vector<InputArray>& arrays, const std::vec
   });
 }
 
-double discrepancy(const InputArray& array, const std::vector<double>& lo, const std::vector<double>& hi,
-                   const std::string& kind) {
-  if (kind != "l2-star" && kind != "star")
-    throw pds::InvalidArgument("discrepancy: kind must be 'l2-star' or 'star', got '" + kind + "'");
-  return pds::visit_dim(dim_of(array, "points"), [&](auto d) {
-    constexpr int D = decltype(d)::value;
-    const auto points = to_points<D>(array);
-    const auto domain = make_domain<D>(lo, hi, false);
+/// kind: SciPy's "L2-star", "CD", "WD", "MD" (any dimension, on the points
+/// scaled into the unit cube by lo, hi), or "star" (exact D*, 1 to 8 dimensions).
+double discrepancy(const InputArray& array, std::vector<double> lo, std::vector<double> hi, const std::string& kind) {
+  const int dim = dim_of(array, "points");
+  if (kind == "star")
+    return pds::visit_dim<pds::kMinDim, pds::kMaxDim>(dim, [&](auto d) {
+      constexpr int D = decltype(d)::value;
+      const auto points = to_points<D>(array);
+      const auto domain = make_domain<D>(lo, hi, false);
+      py::gil_scoped_release unlocked;
+      return pds::star_discrepancy(points, domain);
+    });
+  const pds::DiscrepancyMethod method = pds::parse_discrepancy_method(kind == "l2-star" ? "L2-star" : kind);
+  const pds::PointCloud cloud = to_cloud(array);
+  py::gil_scoped_release unlocked;
+  if (lo.empty() && hi.empty()) return pds::discrepancy(cloud, method);
+  return pds::discrepancy(cloud, lo, hi, method);
+}
+
+/// The smallest distance between two points and a pair attaining it, any dimension.
+py::tuple min_distance(const InputArray& array, std::vector<double> lo, std::vector<double> hi, bool torus) {
+  const pds::PointCloud cloud = to_cloud(array);
+  unit_if_empty(cloud.dim, lo, hi);
+  pds::MinDistance m;
+  {
     py::gil_scoped_release unlocked;
-    return kind == "star" ? pds::star_discrepancy(points, domain) : pds::l2_star_discrepancy(points, domain);
-  });
+    m = pds::min_distance(cloud, lo, hi, torus);
+  }
+  if (!std::isfinite(m.distance)) return py::make_tuple(m.distance, py::none(), py::none());
+  return py::make_tuple(m.distance, m.i, m.j);
 }
 
 #ifdef PDS_WITH_JSON
@@ -207,16 +253,25 @@ std::string analyze_json(const std::vector<InputArray>& arrays, const std::vecto
                          const std::vector<double>& hi, bool torus, std::optional<double> radius, int max_frequency,
                          bool spectrum, double pcf_r_max, double pcf_bandwidth) {
   if (max_frequency < 0) throw pds::InvalidArgument("max_frequency must be positive");
-  return pds::visit_dim(dim_of_sets(arrays), [&](auto d) {
+  const int dim = dim_of_sets(arrays);
+  const pds::AnalysisOptions options{.radius = radius,
+                                     .max_frequency = max_frequency,
+                                     .spectrum = spectrum,
+                                     .pcf = {.r_max = pcf_r_max, .bandwidth = pcf_bandwidth}};
+  if (dim > pds::kMaxDim) {
+    std::vector<pds::PointCloud> clouds;
+    for (const InputArray& a : arrays) clouds.push_back(to_cloud(a));
+    std::vector<double> l = lo, h = hi;
+    unit_if_empty(dim, l, h);
+    py::gil_scoped_release unlocked;
+    return pds::analysis_report_json(pds::analyze(std::span<const pds::PointCloud>(clouds), l, h, torus, options));
+  }
+  return pds::visit_dim<pds::kMinDim, pds::kMaxDim>(dim, [&](auto d) {
     constexpr int D = decltype(d)::value;
     const auto sets = to_sets<D>(arrays);
     const auto domain = make_domain<D>(lo, hi, torus);
     py::gil_scoped_release unlocked;
-    const pds::AnalysisReport report = pds::analyze<D>(sets, domain,
-                                                       {.radius = radius,
-                                                        .max_frequency = max_frequency,
-                                                        .spectrum = spectrum,
-                                                        .pcf = {.r_max = pcf_r_max, .bandwidth = pcf_bandwidth}});
+    const pds::AnalysisReport report = pds::analyze<D>(sets, domain, options);
     return pds::analysis_report_json(report);
   });
 }
@@ -258,6 +313,7 @@ PYBIND11_MODULE(_pds, m) {
   m.def("pair_correlation", &pair_correlation, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
         py::arg("r_max"), py::arg("bandwidth"), py::arg("steps"));
   m.def("discrepancy", &discrepancy, py::arg("points"), py::arg("lo"), py::arg("hi"), py::arg("kind"));
+  m.def("min_distance", &min_distance, py::arg("points"), py::arg("lo"), py::arg("hi"), py::arg("torus"));
 #ifdef PDS_WITH_JSON
   m.def("analyze_json", &analyze_json, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
         py::arg("radius"), py::arg("max_frequency"), py::arg("spectrum"), py::arg("pcf_r_max"),

@@ -74,6 +74,24 @@ expect_exit 2 "$pds" analyze - - <"$tmp/a.csv"
 expect_exit 2 "$pds" analyze --method random --dim 3 --count 100 --spectrum "$tmp/s3.png"
 expect_exit 2 "$pds" analyze "$tmp/a.csv" --torus --frequencies 5000
 
+# Any width: 1 to 8 columns get every measure but the spectra; more, distances
+# and discrepancies only (docs/analysis.md, Dimensions).
+awk 'BEGIN { srand(3); print "a,b,c,d,e"; for (i = 0; i < 300; i++) { printf "%.6f", rand(); for (k = 1; k < 5; k++) printf ",%.6f", rand(); print "" } }' >"$tmp/p5.csv"
+expect_exit 0 "$pds" analyze "$tmp/p5.csv" --radius 0.05
+for key in '"dim": 5' '"relative_radius": 0\.' '"maximal": false' '"centered_discrepancy": 0\.' \
+  '"wrap_around_discrepancy"' '"mixture_discrepancy"' '"spectrum_note": "not computed' '"pcf_note"'; do
+  has "$tmp/out" "$key"
+done
+expect_exit 2 "$pds" analyze "$tmp/p5.csv" --pcf "$tmp/pcf.csv"
+awk 'BEGIN { srand(4); for (i = 0; i < 200; i++) { printf "%.6f", rand(); for (k = 1; k < 12; k++) printf ",%.6f", rand(); print "" } }' >"$tmp/p12.csv"
+expect_exit 0 "$pds" analyze "$tmp/p12.csv" --radius 0.05
+for key in '"dim": 12' '"min_distance": 0\.' '"relative_radius": null' '"relative_radius_note": "undefined past 8' \
+  '"maximality_note"' '"l2_star_discrepancy": 0\.' '"mixture_discrepancy": [0-9]'; do
+  has "$tmp/out" "$key"
+done
+"$pds" analyze --help >"$tmp/help" 2>&1
+has "$tmp/help" "discrepancies in any"
+
 # The comparison sheet: default methods (whatever the registry holds) and a list.
 expect_exit 0 "$pds" compare -n 256 -M 2 -K 16 --panel 100 -o "$tmp/c.png"
 [[ $(png_size "$tmp/c.png") =~ ^348x ]] || fail "comparison sheet width $(png_size "$tmp/c.png")"

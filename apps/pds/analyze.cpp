@@ -8,6 +8,7 @@
 
 #include <iostream>
 #include <memory>
+#include <span>
 #include <sstream>
 
 #include "analysis_common.h"
@@ -62,6 +63,10 @@ AnalysisReport analyze_and_draw(const std::vector<PointSet<D>>& sets, const Doma
       }
   if (!opt.spectrum.empty() && D != 2) throw InvalidArgument("--spectrum: pictures of the spectrum are 2D only");
   if (!opt.plot.empty() && D != 2) throw InvalidArgument("--plot: point pictures are 2D only");
+  if (D != 2 && D != 3)
+    for (const auto& [name, value] : {std::pair{"--radial", &opt.radial}, std::pair{"--pcf", &opt.pcf}})
+      if (!value->empty())
+        throw InvalidArgument(std::string(name) + ": spectra and the pair correlation are measured in 2D and 3D only");
 
   AnalysisCurves curves;
   AnalysisReport report = analyze<D>(sets, domain,
@@ -70,7 +75,7 @@ AnalysisReport analyze_and_draw(const std::vector<PointSet<D>>& sets, const Doma
                                       .spectrum = !opt.spectrum.empty() || !opt.radial.empty(),
                                       .pcf = {.r_max = opt.pcf_max, .bandwidth = opt.pcf_bandwidth}},
                                      &curves);
-  if (!report.spectrum_note.empty())
+  if (!report.spectrum_note.empty() && (D == 2 || D == 3))
     report.spectrum_note = "skipped: more than " + std::to_string(static_cast<long long>(kDefaultSpectrumWork)) +
                            " point-frequency products; ask with --frequencies, --spectrum or --radial";
 
@@ -104,8 +109,11 @@ AnalysisReport analyze_and_draw(const std::vector<PointSet<D>>& sets, const Doma
 void add_analyze(CLI::App& app) {
   auto opt = std::make_shared<AnalyzeOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "analyze", "Measure point sets (files, '-' for CSV on stdin, or --method to generate them); prints JSON");
-  cmd->add_option("file", opt->files, "Point files (.csv or .npy) or '-'; several files are several realisations");
+      "analyze",
+      "Measure point sets (files, '-' for CSV on stdin, or --method to generate them); prints JSON. Minimum and "
+      "nearest-neighbour distances and the L2-star, centered, wrap-around and mixture discrepancies in any "
+      "dimension; relative radius and maximality (--radius) in 1 to 8; spectra and pair correlation in 2D and 3D");
+  cmd->add_option("file", opt->files, "Point files (.csv or .npy, any number of columns) or '-'; several files are several realisations");
   add_domain_options(*cmd, opt->domain, false);
   auto* radius = cmd->add_option("--radius,-r", opt->radius,
                                  "Minimum distance to check (and, with --method, to generate with); also reports "
@@ -169,16 +177,33 @@ void add_analyze(CLI::App& app) {
       }
       source.files = opt->files;
     }
-    const AnalysisReport report = visit_dim(clouds.front().dim, [&](auto d) {
-      constexpr int D = decltype(d)::value;
-      GenerateRequest spec;  // reuses the request's bounds handling
-      spec.dim = D;
-      spec.torus = opt->domain.torus;
-      split_bounds(opt->domain, D, spec.lo, spec.hi);
-      std::vector<PointSet<D>> sets;
-      for (const PointCloud& c : clouds) sets.push_back(c.as<D>());
-      return analyze_and_draw<D>(sets, spec.domain<D>(), r, *opt);
-    });
+    const int dim = clouds.front().dim;
+    const AnalysisReport report = [&] {
+      if (dim > kMaxDim) {
+        // Past 8 dimensions: distances and discrepancies (analysis/report.h).
+        for (const std::string* path : {&opt->spectrum, &opt->plot, &opt->radial, &opt->pcf})
+          if (!path->empty())
+            throw InvalidArgument("spectra, the pair correlation and pictures are 2D/3D only; the points have " +
+                                  std::to_string(dim) + " dimensions");
+        std::vector<double> lo, hi;
+        split_bounds(opt->domain, dim, lo, hi);
+        if (lo.empty()) {  // the unit cube
+          lo.assign(static_cast<std::size_t>(dim), 0.0);
+          hi.assign(static_cast<std::size_t>(dim), 1.0);
+        }
+        return analyze(std::span<const PointCloud>(clouds), lo, hi, opt->domain.torus, {.radius = r});
+      }
+      return visit_dim<kMinDim, kMaxDim>(dim, [&](auto d) {
+        constexpr int D = decltype(d)::value;
+        GenerateRequest spec;  // reuses the request's bounds handling
+        spec.dim = D;
+        spec.torus = opt->domain.torus;
+        split_bounds(opt->domain, D, spec.lo, spec.hi);
+        std::vector<PointSet<D>> sets;
+        for (const PointCloud& c : clouds) sets.push_back(c.as<D>());
+        return analyze_and_draw<D>(sets, spec.domain<D>(), r, *opt);
+      });
+    }();
     std::cout << analysis_report_json(report, source) << std::endl;
   });
 }

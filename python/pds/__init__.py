@@ -39,6 +39,7 @@ __all__ = [
     "radial_power",
     "pair_correlation",
     "discrepancy",
+    "min_distance",
     "render",
     "MAX_POINTS",
     "qmc",
@@ -274,16 +275,44 @@ def pair_correlation(
     return _pds.pair_correlation(sets, lo, hi, bool(torus), float(r_max), float(bandwidth), int(steps))
 
 
-def discrepancy(points, *, bounds=None, kind: str = "l2-star") -> float:
-    """Discrepancy of a point set against boxes anchored at the lower corner.
+def discrepancy(points, method: str | None = None, *, bounds=None, kind: str | None = None) -> float:
+    """Discrepancy of an (N, D) point set, any D >= 1 (``star``: 1 to 8).
 
-    ``kind="l2-star"``: Warnock's L2-star discrepancy (up to 131072 points);
-    ``kind="star"``: the exact star discrepancy D* (about 10,000 points in 2D,
-    460 in 3D).
+    ``method`` takes SciPy's names and returns what
+    ``scipy.stats.qmc.discrepancy(points, method=...)`` returns, the same
+    double on the same points: ``"L2-star"`` (Warnock's T, not squared),
+    ``"CD"``, ``"WD"``, ``"MD"`` (the squares of the centered, wrap-around
+    and mixture discrepancies); up to 131072 points (O(N^2 D), on all cores).
+    ``"star"``: the exact star discrepancy D* (about 10,000 points in 2D, 460
+    in 3D). Without ``method`` (nor the older ``kind="l2-star"|"star"``) it is
+    ``"L2-star"``, where SciPy's default is ``"CD"``.
+
+    Points must lie in the closed unit cube, or in the box ``bounds`` (lo
+    corner then hi corner), which is first scaled onto it as
+    ``qmc.scale(points, lo, hi, reverse=True)`` does.
     """
+    if method is not None and kind is not None:
+        raise ValueError("give method or kind, not both")
+    if kind is not None and kind not in ("l2-star", "star"):
+        raise ValueError(f"discrepancy: kind must be 'l2-star' or 'star' (or method= one of SciPy's names), got {kind!r}")
+    name = method if method is not None else (kind if kind is not None else "L2-star")
     sets = _sets(points)
-    lo, hi = _bounds(bounds, _dim(sets))
-    return _pds.discrepancy(sets[0], lo, hi, str(kind))
+    a = _np.asarray(sets[0], dtype=float)
+    if a.ndim == 1:
+        a = a.reshape(-1, 1)
+    lo, hi = _bounds(bounds, _dim([a]))
+    return _pds.discrepancy(a, lo, hi, str(name))
+
+
+def min_distance(points, *, bounds=None, torus: bool = False):
+    """The smallest distance between two of the (N, D) points, any D >= 1, and
+    a pair attaining it: ``(distance, i, j)`` with i < j (``(inf, None,
+    None)`` for fewer than two points). Exact; in the box ``bounds`` (default
+    the unit cube) or, with ``torus=True``, on the torus over it.
+    """
+    a = _np.asarray(_sets(points)[0], dtype=float)
+    lo, hi = _bounds(bounds, _dim([a]))
+    return _pds.min_distance(a, lo, hi, bool(torus))
 
 
 def render(

@@ -9,6 +9,10 @@
 // group (count, min_distance, maximality, ...) describe the first set; the
 // spacing and discrepancy fields are means over the sets; the spectrum and
 // the pair correlation are averaged over all of them.
+//
+// Dimensions: everything in 2D and 3D; in 1 and 4 to 8 dimensions all but the
+// spectrum and the pair correlation; past 8 (run-time dimension) distances
+// and discrepancies only. docs/analysis.md has the table.
 
 #include <array>
 #include <cstddef>
@@ -41,6 +45,9 @@ struct AnalysisOptions {
   double spectrum_work = kDefaultSpectrumWork;
   /// r_max and bandwidth of the pair correlation function (0: its defaults).
   PairCorrelationOptions pcf;
+  /// The centered, wrap-around and mixture discrepancies (O(N^2 D) each) are
+  /// computed for sets of at most this many points.
+  std::size_t discrepancy_points = std::size_t{1} << 14;
 };
 
 /// Maximality at AnalysisOptions::radius (analysis/maximality.h).
@@ -51,6 +58,7 @@ struct MaximalityReport {
   std::optional<std::vector<double>> gap;  // a point farther than the radius from every sample
   double gap_distance = 0.0;               // its distance to the nearest sample
   std::size_t cells_checked = 0;
+  bool budget_exhausted = false;  // the tolerance is check_maximality's cell budget's
 };
 
 /// The radial spectrum in a few numbers (frequencies in units of the mean
@@ -83,13 +91,15 @@ struct AnalysisReport {
   double min_distance = std::numeric_limits<double>::infinity();
   std::optional<std::array<std::size_t, 2>> min_distance_pair;
   double mean_nn_distance = std::numeric_limits<double>::quiet_NaN();    // NaN for fewer than two points
-  double relative_radius = 0;                                            // Lagae & Dutre 2008
+  double relative_radius = 0;                                            // Lagae & Dutre 2008; NaN past kMaxDim
+  std::string relative_radius_note;                                      // why it is NaN, when it is
   double max_packing_radius = std::numeric_limits<double>::quiet_NaN();  // NaN for no points
   /// With AnalysisOptions::radius: that radius, whether every pair is at
   /// least that far apart, and maximality at it.
   std::optional<double> radius;
   bool min_distance_holds = false;
   std::optional<MaximalityReport> maximality;
+  std::string maximality_note;  // why maximality was not checked at the radius (past kMaxDim)
 
   // Over all the sets.
   std::size_t sets = 0;
@@ -97,9 +107,14 @@ struct AnalysisReport {
   double rho_mean = std::numeric_limits<double>::quiet_NaN();  // mean; NaN unless every set has two points
   std::optional<double> l2_star_discrepancy;                   // mean; absent beyond kMaxL2StarPoints
   std::optional<double> star_discrepancy;                      // mean; absent where star_discrepancy_feasible is false
+  /// Means of SciPy's qmc.discrepancy methods "CD", "WD", "MD" (squares,
+  /// analysis/discrepancy.h) on the sets scaled into the unit cube; absent
+  /// beyond AnalysisOptions::discrepancy_points.
+  std::optional<double> centered_discrepancy, wrap_around_discrepancy, mixture_discrepancy;
   std::optional<SpectrumSummary> spectrum;
   std::string spectrum_note;      // why the spectrum was skipped, when it was
-  std::optional<PcfSummary> pcf;  // absent unless every set has two points
+  std::optional<PcfSummary> pcf;  // absent unless every set has two points (and outside 2D and 3D)
+  std::string pcf_note;           // why the pair correlation was not computed, outside 2D and 3D
 };
 
 /// The curves behind the summaries, for pictures and tables.
@@ -117,6 +132,14 @@ struct AnalysisCurves {
 template <int D>
 AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domain, const AnalysisOptions& options = {},
                        AnalysisCurves* curves = nullptr);
+
+/// The same for sets whose dimension is known at run time, any dim >= 1, in
+/// the box [lo, hi) or the torus over it. From 1 to kMaxDim this is
+/// analyze<D>; past it the report holds the count, the minimum and mean
+/// nearest-neighbour distances and the discrepancies (relative radius NaN,
+/// maximality not checked, no spectrum or PCF, each with a note saying so).
+AnalysisReport analyze(std::span<const PointCloud> sets, std::span<const double> lo, std::span<const double> hi,
+                       bool periodic, const AnalysisOptions& options = {});
 
 /// The same for one set.
 template <int D>

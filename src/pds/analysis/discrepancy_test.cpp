@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "pds/error.h"
+#include "pds/parallel.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 
@@ -166,6 +167,127 @@ TEST(Discrepancy, RejectsBadInput) {
   EXPECT_FALSE(star_discrepancy_feasible(100000, 2));
   EXPECT_TRUE(star_discrepancy_feasible(9000, 2));
   EXPECT_THROW(star_discrepancy(white_noise<2>({20000}, Domain<2>::unit(), 1), Domain<2>::unit()), InvalidArgument);
+}
+
+// Uniform random points in any dimension (the samplers' white noise is
+// instantiated for the plane and space only).
+template <int D>
+PointSet<D> uniform_points(std::size_t n, const Domain<D>& domain, std::uint64_t seed) {
+  Rng rng(seed);
+  PointSet<D> points(n);
+  for (auto& p : points)
+    for (int k = 0; k < D; ++k) p[k] = domain.lo[k] + rng.uniform() * domain.extent(k);
+  return points;
+}
+
+// Points of a Kronecker sequence, x_ik = frac((i + 1) sqrt(p_k)), which
+// NumPy computes to the same doubles (one product, one subtraction).
+PointCloud kronecker(std::size_t n, int dim) {
+  static constexpr int kPrimes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37};
+  PointCloud cloud{dim, {}};
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < dim; ++k) {
+      const double v = static_cast<double>(i + 1) * std::sqrt(static_cast<double>(kPrimes[k]));
+      cloud.coords.push_back(v - std::floor(v));
+    }
+  return cloud;
+}
+
+// scipy.stats.qmc.discrepancy(kronecker(n, d), method=m) for m = L2-star, CD,
+// WD, MD, computed once with SciPy 1.10.1 (Debian's python3-scipy):
+//   x[i, k] = (i + 1) * sqrt(p_k) - floor(...); repr(qmc.discrepancy(x, method=m))
+// python/tests/test_analysis.py compares with SciPy itself.
+struct SciPyReference {
+  std::size_t n;
+  int dim;
+  double l2_star, cd, wd, md;
+};
+constexpr SciPyReference kSciPy[] = {
+    {64, 1, 0.010071956091196191, 0.0001014442995002085, 0.00011015756671639565, 0.00010580093309631167},
+    {64, 3, 0.017906536444515925, 0.0013659044491265426, 0.0019263403790326095, 0.0023361292988739457},
+    {100, 10, 0.002447945390009849, 0.030466102625993585, 0.15873075575536078, 0.5908331313236488},
+    {257, 5, 0.008251642741613456, 0.0013449361400879045, 0.002266521147612721, 0.003586170960197421},
+};
+
+TEST(Discrepancy, EqualsSciPyInAnyDimension) {
+  for (const auto& ref : kSciPy) {
+    const PointCloud x = kronecker(ref.n, ref.dim);
+    const double expected[] = {ref.l2_star, ref.cd, ref.wd, ref.md};
+    for (std::size_t m = 0; m < kDiscrepancyMethods.size(); ++m) {
+      const double got = discrepancy(x, kDiscrepancyMethods[m]);
+      EXPECT_NEAR(got, expected[m], 1e-12 * expected[m])
+          << discrepancy_method_name(kDiscrepancyMethods[m]) << ", " << ref.n << " points in " << ref.dim << "D";
+    }
+  }
+}
+
+TEST(Discrepancy, ClosedFormsForOnePoint) {
+  // One point at the centre of [0, 1]: CD^2 = 13/12 - 2 + 1 = 1/12,
+  // MD^2 = 19/12 - 10/3 + 15/8 = 1/8, T^2 = 1/3 - 3/4 + 1/2 = 1/12; for any
+  // single point WD^2 = (3/2)^D - (4/3)^D.
+  const PointCloud centre{1, {0.5}};
+  EXPECT_NEAR(discrepancy(centre, DiscrepancyMethod::Centered), 1.0 / 12, 1e-15);
+  EXPECT_NEAR(discrepancy(centre, DiscrepancyMethod::Mixture), 1.0 / 8, 1e-15);
+  EXPECT_NEAR(discrepancy(centre, DiscrepancyMethod::L2Star), std::sqrt(1.0 / 12), 1e-15);
+  for (int d : {1, 4, 9}) {
+    const PointCloud one{d, std::vector<double>(static_cast<std::size_t>(d), 0.3)};
+    EXPECT_NEAR(discrepancy(one, DiscrepancyMethod::WrapAround), std::pow(1.5, d) - std::pow(4.0 / 3.0, d), 1e-13);
+  }
+}
+
+TEST(Discrepancy, TypedL2StarIsTheRunTimeOneAndScalingIsDocumented) {
+  const auto domain = Domain<3>::box({-1, 0, 2}, {1, 4, 2.5});
+  const auto points = white_noise<3>({200}, domain, 5);
+  const PointCloud cloud = PointCloud::from(points);
+  const std::vector<double> lo(domain.lo.begin(), domain.lo.end()), hi(domain.hi.begin(), domain.hi.end());
+  EXPECT_EQ(l2_star_discrepancy(points, domain), discrepancy(cloud, lo, hi, DiscrepancyMethod::L2Star));
+  PointCloud unit = cloud;
+  for (std::size_t k = 0; k < unit.coords.size(); ++k)
+    unit.coords[k] = (unit.coords[k] - lo[k % 3]) / (hi[k % 3] - lo[k % 3]);
+  for (const auto m : kDiscrepancyMethods) EXPECT_EQ(discrepancy(cloud, lo, hi, m), discrepancy(unit, m));
+}
+
+TEST(Discrepancy, SameBitsForAnyThreadCount) {
+  const PointCloud x = kronecker(700, 7);
+  for (const auto m : kDiscrepancyMethods) {
+    double one, four;
+    {
+      ThreadLimit limit(1);
+      one = discrepancy(x, m);
+    }
+    {
+      ThreadLimit limit(4);
+      four = discrepancy(x, m);
+    }
+    EXPECT_EQ(one, four) << discrepancy_method_name(m);
+  }
+}
+
+TEST(Discrepancy, RunTimeNamesAndBadInput) {
+  for (const auto m : kDiscrepancyMethods) EXPECT_EQ(parse_discrepancy_method(discrepancy_method_name(m)), m);
+  EXPECT_THROW(parse_discrepancy_method("cd"), InvalidArgument);
+  EXPECT_THROW(discrepancy(PointCloud{2, {}}, DiscrepancyMethod::Centered), InvalidArgument);
+  EXPECT_THROW(discrepancy(PointCloud{2, {0.5, 1.5}}, DiscrepancyMethod::Centered), InvalidArgument);
+  EXPECT_THROW(discrepancy(PointCloud{2, {0.5, NAN}}, DiscrepancyMethod::WrapAround), InvalidArgument);
+  // The closed cube, as SciPy: 1 is accepted.
+  EXPECT_NO_THROW(discrepancy(PointCloud{2, {1.0, 0.0}}, DiscrepancyMethod::Mixture));
+  const std::vector<double> lo{0, 0}, hi{2, 2};
+  EXPECT_THROW(discrepancy(PointCloud{2, {0.5, 2.5}}, lo, hi, DiscrepancyMethod::Centered), InvalidArgument);
+  EXPECT_THROW(discrepancy(PointCloud{3, {0.5, 0.5, 0.5}}, lo, hi, DiscrepancyMethod::Centered), InvalidArgument);
+}
+
+TEST(Discrepancy, TypedInstancesUpToEightDimensions) {
+  // Star >= L2-star (a supremum over the boxes against their root mean square).
+  const auto d5 = Domain<5>::unit();
+  const auto p5 = uniform_points<5>(12, d5, 2);
+  EXPECT_GE(star_discrepancy(p5, d5), l2_star_discrepancy(p5, d5));
+  const auto d8 = Domain<8>::unit();
+  const auto p8 = uniform_points<8>(300, d8, 2);
+  const PointCloud c8 = PointCloud::from(p8);
+  EXPECT_EQ(l2_star_discrepancy(p8, d8), discrepancy(c8, DiscrepancyMethod::L2Star));
+  const auto d1 = Domain<1>::unit();
+  const auto p1 = uniform_points<1>(50, d1, 2);
+  EXPECT_GE(star_discrepancy(p1, d1), l2_star_discrepancy(p1, d1));
 }
 
 }  // namespace

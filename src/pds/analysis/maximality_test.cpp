@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "pds/analysis/distance.h"
+#include "pds/analysis/relative_radius.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/regular.h"
 
@@ -114,6 +116,90 @@ TEST(Maximality, WitnessIsFartherThanTheRadiusFromEverySample3D) {
   ASSERT_TRUE(result.gap.has_value());
   for (const auto& p : points) EXPECT_GT(domain.distance2(p, *result.gap), 0.12 * 0.12);
   EXPECT_TRUE(check_maximality(points, domain, 2.0).maximal);
+}
+
+// The checkerboard lattice D_n (integer points with an even coordinate sum)
+// on the torus [0, 2k)^n, which it tiles: minimum distance sqrt 2, covering
+// radius 1 in 4D and sqrt(n)/2 from 4D up (the deep hole (1/2, ..., 1/2)).
+// With `half`, E8 = D8 and D8 + (1/2, ..., 1/2): covering radius 1.
+template <int D>
+PointSet<D> checkerboard(int k, bool half = false) {
+  PointSet<D> points;
+  std::array<int, D> c{};
+  while (true) {
+    int sum = 0;
+    for (int v : c) sum += v;
+    if (sum % 2 == 0)
+      for (double shift : half ? std::vector<double>{0.0, 0.5} : std::vector<double>{0.0}) {
+        Point<D> p;
+        for (int i = 0; i < D; ++i) p[i] = c[i] + shift;
+        points.push_back(p);
+      }
+    int a = 0;
+    while (a < D && ++c[a] == 2 * k) c[a++] = 0;
+    if (a == D) break;
+  }
+  return points;
+}
+
+template <int D>
+Domain<D> torus_of(double side) {
+  Point<D> lo, hi;
+  lo.fill(0.0);
+  hi.fill(side);
+  return Domain<D>::torus(lo, hi);
+}
+
+// Maximal exactly between the covering radius and the minimum distance
+// (sqrt 2); a point removed leaves a hole of radius sqrt 2, found.
+template <int D>
+void check_lattice(PointSet<D> points, const Domain<D>& domain, double covering, double radius) {
+  {
+    const auto mx = check_maximality(points, domain, radius);
+    EXPECT_TRUE(mx.maximal);
+    EXPECT_EQ(mx.tolerance, 0.0);
+    EXPECT_FALSE(mx.budget_exhausted);
+    EXPECT_FALSE(check_maximality(points, domain, 0.97 * covering).maximal);
+    points.erase(points.begin() + static_cast<std::ptrdiff_t>(points.size() / 3));
+    const auto holed = check_maximality(points, domain, radius);
+    ASSERT_FALSE(holed.maximal);
+    ASSERT_TRUE(holed.gap.has_value());
+    for (const auto& p : points) EXPECT_GT(domain.distance2(p, *holed.gap), radius * radius);
+  }
+}
+
+TEST(RelativeRadius, DensestLatticesHaveOne) {
+  // D4 and E8 are the densest packings in 4D and 8D: rho = 1 (Conway & Sloane).
+  const auto d4 = checkerboard<4>(2);
+  const auto t4 = torus_of<4>(4.0);
+  EXPECT_NEAR(relative_radius(min_distance(d4, t4).distance, t4.volume(), d4.size(), 4), 1.0, 1e-12);
+  const auto e8 = checkerboard<8>(1, true);
+  const auto t8 = torus_of<8>(2.0);
+  EXPECT_NEAR(relative_radius(min_distance(e8, t8).distance, t8.volume(), e8.size(), 8), 1.0, 1e-12);
+  // D5 is the densest lattice in 5D too.
+  const auto d5 = checkerboard<5>(2);
+  const auto t5 = torus_of<5>(4.0);
+  EXPECT_NEAR(relative_radius(min_distance(d5, t5).distance, t5.volume(), d5.size(), 5), 1.0, 1e-12);
+}
+
+TEST(Maximality, LatticeD4) { check_lattice(checkerboard<4>(2), torus_of<4>(4.0), 1.0, 1.2); }
+TEST(Maximality, LatticeD5) {
+  check_lattice(checkerboard<5>(2), torus_of<5>(4.0), std::sqrt(5.0) / 2, 0.5 * (std::sqrt(5.0) / 2 + std::sqrt(2.0)));
+}
+// In 8D the cells needed grow as (r / (r - covering radius))^8: a radius
+// near the minimum distance keeps the proof to seconds (1.21 takes 40 s).
+TEST(Maximality, LatticeE8) { check_lattice(checkerboard<8>(1, true), torus_of<8>(2.0), 1.0, 1.39); }
+
+TEST(Maximality, OneDimensionAndTheBudget) {
+  const auto domain = Domain<1>::unit(false);
+  const PointSet<1> points{{{0.1}}, {{0.3}}, {{0.5}}, {{0.7}}, {{0.9}}};
+  EXPECT_TRUE(check_maximality(points, domain, 0.1 + 1e-9).maximal);
+  EXPECT_FALSE(check_maximality(points, domain, 0.1 - 1e-9).maximal);
+  // A budget too small to decide: maximal only up to the cells left whole.
+  const auto mx = check_maximality(checkerboard<5>(2), torus_of<5>(4.0), 1.2, 0.0, 50);
+  EXPECT_TRUE(mx.maximal);
+  EXPECT_TRUE(mx.budget_exhausted);
+  EXPECT_GT(mx.tolerance, 0.0);
 }
 
 TEST(Maximality, EmptyOrSparseSetsAreNotMaximal) {

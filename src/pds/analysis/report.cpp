@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 #include "pds/analysis/discrepancy.h"
 #include "pds/analysis/distance.h"
@@ -58,6 +59,7 @@ void first_set_fields(const PointSet<D>& points, const Domain<D>& domain, std::o
       r.gap_distance = mx.gap_distance;
     }
     r.cells_checked = mx.cells_checked;
+    r.budget_exhausted = mx.budget_exhausted;
     out.maximality = r;
   }
 }
@@ -123,12 +125,23 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
                                                  [](const PointSet<D>& s) { return s.size() <= kMaxL2StarPoints; });
   bool star_ok = smallest > 0;
   for (const auto& s : sets) star_ok = star_ok && star_discrepancy_feasible(s.size(), D);
+  const bool hickernell_ok = smallest > 0 && std::all_of(sets.begin(), sets.end(), [&](const PointSet<D>& s) {
+    return s.size() <= options.discrepancy_points;
+  });
+  std::array<double, 3> hickernell{};
+  const std::vector<double> lo(domain.lo.begin(), domain.lo.end()), hi(domain.hi.begin(), domain.hi.end());
   for (const auto& s : sets) {
     const Spacing sp = spacing(s, domain);
     rho_min += sp.rho_min;
     rho_mean += sp.rho_mean;
     if (l2_ok) l2 += l2_star_discrepancy(s, domain);
     if (star_ok) star += star_discrepancy(s, domain);
+    if (hickernell_ok) {
+      const PointCloud cloud = PointCloud::from(s);
+      hickernell[0] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Centered);
+      hickernell[1] += discrepancy(cloud, lo, hi, DiscrepancyMethod::WrapAround);
+      hickernell[2] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Mixture);
+    }
   }
   const double m = static_cast<double>(sets.size());
   if (smallest > 1) {
@@ -137,6 +150,16 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
   }
   if (l2_ok) out.l2_star_discrepancy = l2 / m;
   if (star_ok) out.star_discrepancy = star / m;
+  if (hickernell_ok) {
+    out.centered_discrepancy = hickernell[0] / m;
+    out.wrap_around_discrepancy = hickernell[1] / m;
+    out.mixture_discrepancy = hickernell[2] / m;
+  }
+  if constexpr (D != 2 && D != 3) {
+    out.spectrum_note = "not computed: the spectrum is measured in 2D and 3D only";
+    out.pcf_note = "not computed: the pair correlation is measured in 2D and 3D only";
+    return out;
+  } else {
 
   // Fourier view.
   const int K = options.max_frequency > 0 ? options.max_frequency : (D == 2 ? 128 : 32);
@@ -161,11 +184,100 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
     if (curves) curves->pcf = std::move(g);
   }
   return out;
+  }
 }
 
-template AnalysisReport analyze<2>(std::span<const PointSet<2>>, const Domain<2>&, const AnalysisOptions&,
-                                   AnalysisCurves*);
-template AnalysisReport analyze<3>(std::span<const PointSet<3>>, const Domain<3>&, const AnalysisOptions&,
-                                   AnalysisCurves*);
+AnalysisReport analyze(std::span<const PointCloud> sets, std::span<const double> lo, std::span<const double> hi,
+                       bool periodic, const AnalysisOptions& options) {
+  if (sets.empty()) throw InvalidArgument("analysis: no point sets");
+  const int dim = sets[0].dim;
+  for (const PointCloud& s : sets)
+    if (s.dim != dim)
+      throw InvalidArgument("analysis: sets of dimensions " + std::to_string(dim) + " and " + std::to_string(s.dim));
+  if (lo.size() != static_cast<std::size_t>(dim) || hi.size() != static_cast<std::size_t>(dim))
+    throw InvalidArgument("analysis: the bounds have " + std::to_string(lo.size()) + " and " +
+                          std::to_string(hi.size()) + " coordinates, the points " + std::to_string(dim));
+  if (dim >= kMinDim && dim <= kMaxDim)
+    return visit_dim<kMinDim, kMaxDim>(dim, [&](auto d) {
+      constexpr int D = decltype(d)::value;
+      Domain<D> domain;
+      for (int k = 0; k < D; ++k) {
+        domain.lo[k] = lo[k];
+        domain.hi[k] = hi[k];
+      }
+      domain.periodic = periodic;
+      domain.validate();
+      std::vector<PointSet<D>> typed;
+      for (const PointCloud& s : sets) typed.push_back(s.as<D>());
+      return analyze<D>(std::span<const PointSet<D>>(typed), domain, options);
+    });
+  // Past kMaxDim: distances and discrepancies only.
+  AnalysisReport out;
+  out.count = sets[0].size();
+  out.dim = dim;
+  out.lo.assign(lo.begin(), lo.end());
+  out.hi.assign(hi.begin(), hi.end());
+  out.torus = periodic;
+  const NearestNeighbors nn = nearest_neighbors(sets[0], lo, hi, periodic);
+  double sum = 0;
+  for (std::size_t i = 0; i < nn.distance.size(); ++i) {
+    sum += nn.distance[i];
+    if (nn.distance[i] < out.min_distance) {
+      out.min_distance = nn.distance[i];
+      out.min_distance_pair = std::array<std::size_t, 2>{std::min<std::size_t>(i, nn.index[i]),
+                                                         std::max<std::size_t>(i, nn.index[i])};
+    }
+  }
+  out.mean_nn_distance = out.count > 1 ? sum / static_cast<double>(out.count) : NAN;
+  out.relative_radius = NAN;
+  out.relative_radius_note =
+      "undefined past " + std::to_string(kMaxDim) + " dimensions (the densest packing is not known there)";
+  if (options.radius) {
+    require_radius(*options.radius);
+    out.radius = *options.radius;
+    out.min_distance_holds = !(out.min_distance < *options.radius);
+    out.maximality_note = "not checked past " + std::to_string(kMaxDim) + " dimensions";
+  }
+  out.sets = sets.size();
+  std::size_t smallest = sets[0].size();
+  for (const PointCloud& s : sets) smallest = std::min(smallest, s.size());
+  const bool l2_ok = smallest > 0 && std::all_of(sets.begin(), sets.end(),
+                                                 [](const PointCloud& s) { return s.size() <= kMaxL2StarPoints; });
+  const bool hickernell_ok = smallest > 0 && std::all_of(sets.begin(), sets.end(), [&](const PointCloud& s) {
+    return s.size() <= options.discrepancy_points;
+  });
+  std::array<double, 4> sums{};
+  for (const PointCloud& s : sets) {
+    if (l2_ok) sums[0] += discrepancy(s, lo, hi, DiscrepancyMethod::L2Star);
+    if (hickernell_ok) {
+      sums[1] += discrepancy(s, lo, hi, DiscrepancyMethod::Centered);
+      sums[2] += discrepancy(s, lo, hi, DiscrepancyMethod::WrapAround);
+      sums[3] += discrepancy(s, lo, hi, DiscrepancyMethod::Mixture);
+    }
+  }
+  const double m = static_cast<double>(sets.size());
+  if (l2_ok) out.l2_star_discrepancy = sums[0] / m;
+  if (hickernell_ok) {
+    out.centered_discrepancy = sums[1] / m;
+    out.wrap_around_discrepancy = sums[2] / m;
+    out.mixture_discrepancy = sums[3] / m;
+  }
+  out.spectrum_note = "not computed: the spectrum is measured in 2D and 3D only";
+  out.pcf_note = "not computed: the pair correlation is measured in 2D and 3D only";
+  return out;
+}
+
+#define PDS_INSTANTIATE(D)                                                                                  \
+  template AnalysisReport analyze<D>(std::span<const PointSet<D>>, const Domain<D>&, const AnalysisOptions&, \
+                                     AnalysisCurves*);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -26,7 +26,15 @@ Spacing spacing(const PointSet<D>& points, const Domain<D>& domain) {
   return s;
 }
 
-template Spacing spacing<2>(const PointSet<2>&, const Domain<2>&);
-template Spacing spacing<3>(const PointSet<3>&, const Domain<3>&);
+#define PDS_INSTANTIATE(D) template Spacing spacing<D>(const PointSet<D>&, const Domain<D>&);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

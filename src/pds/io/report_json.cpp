@@ -35,6 +35,7 @@ std::string analysis_report_json(const AnalysisReport& r, const AnalysisSource& 
   if (r.min_distance_pair) out["min_distance_pair"] = *r.min_distance_pair;
   out["mean_nn_distance"] = r.mean_nn_distance;
   out["relative_radius"] = r.relative_radius;
+  if (!r.relative_radius_note.empty()) out["relative_radius_note"] = r.relative_radius_note;
   out["max_packing_radius"] = r.max_packing_radius;
   if (r.radius) {
     out["radius"] = *r.radius;
@@ -50,7 +51,10 @@ std::string analysis_report_json(const AnalysisReport& r, const AnalysisSource& 
         detail["gap_distance"] = mx.gap_distance;
       }
       detail["cells_checked"] = mx.cells_checked;
+      if (mx.budget_exhausted) detail["budget_exhausted"] = true;
       out["maximality"] = detail;
+    } else if (!r.maximality_note.empty()) {
+      out["maximality_note"] = r.maximality_note;
     }
   }
   out["sets"] = r.sets;
@@ -58,6 +62,10 @@ std::string analysis_report_json(const AnalysisReport& r, const AnalysisSource& 
   out["rho_mean"] = r.rho_mean;
   out["l2_star_discrepancy"] = optional_or_null(r.l2_star_discrepancy);
   out["star_discrepancy"] = optional_or_null(r.star_discrepancy);
+  // SciPy's qmc.discrepancy methods (CD, WD, MD are squares there and here).
+  out["centered_discrepancy"] = optional_or_null(r.centered_discrepancy);
+  out["wrap_around_discrepancy"] = optional_or_null(r.wrap_around_discrepancy);
+  out["mixture_discrepancy"] = optional_or_null(r.mixture_discrepancy);
   if (r.spectrum) {
     const SpectrumSummary& s = *r.spectrum;
     Json spec;
@@ -76,6 +84,7 @@ std::string analysis_report_json(const AnalysisReport& r, const AnalysisSource& 
         {"bandwidth", r.pcf->bandwidth}, {"r_max", r.pcf->r_max}, {"peak_r", r.pcf->peak_r}, {"peak_g", r.pcf->peak_g}};
   else
     out["pcf"] = nullptr;
+  if (!r.pcf_note.empty()) out["pcf_note"] = r.pcf_note;
   return out.dump(indent);
 }
 
