@@ -6,6 +6,9 @@
 #include <benchmark/benchmark.h>
 #include <gsl/gsl_qrng.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "pds/samplers/halton.h"
 #include "pds/samplers/hammersley.h"
 #include "pds/samplers/latin_hypercube.h"
@@ -32,6 +35,51 @@ void BM_SobolLaterRange2D(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kN);
 }
 BENCHMARK(BM_SobolLaterRange2D)->Unit(benchmark::kMillisecond);
+
+// Sobol in 1,000 dimensions x 10^6 points (10^9 doubles, issue 15), filled
+// 10^4 points (80 MB, far past the caches) at a time into one buffer, against
+// writing the same 10^9 doubles into that buffer (std::fill): the sequence's
+// cost over the cost of its output alone.
+constexpr int kWideDim = 1000;
+constexpr std::uint64_t kWideBlock = 10'000, kWideBlocks = 100;
+
+void BM_SobolWide(benchmark::State& state) {
+  const auto scramble = static_cast<pds::Scramble>(state.range(0));
+  const pds::CloudBox box = pds::CloudBox::unit(kWideDim);
+  std::vector<double> buffer(kWideBlock * kWideDim);
+  for (auto _ : state) {
+    for (std::uint64_t k = 0; k < kWideBlocks; ++k)
+      pds::sobol_fill({kWideBlock, k * kWideBlock, scramble}, box, 1, buffer.data());
+    benchmark::DoNotOptimize(buffer.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kWideBlock * kWideBlocks * kWideDim));
+}
+BENCHMARK(BM_SobolWide)->ArgName("scramble")->DenseRange(0, 2)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// The same through the run-time entry point, a new PointCloud per block (as
+// pds generate and pds.generate get them): allocation and first touch included.
+void BM_SobolWideCloud(benchmark::State& state) {
+  const pds::CloudBox box = pds::CloudBox::unit(kWideDim);
+  for (auto _ : state)
+    for (std::uint64_t k = 0; k < kWideBlocks; ++k)
+      benchmark::DoNotOptimize(pds::sobol({kWideBlock, k * kWideBlock}, box, 1));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kWideBlock * kWideBlocks * kWideDim));
+}
+BENCHMARK(BM_SobolWideCloud)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+void BM_WriteDoublesWide(benchmark::State& state) {
+  std::vector<double> buffer(kWideBlock * kWideDim);
+  for (auto _ : state) {
+    for (std::uint64_t k = 0; k < kWideBlocks; ++k) {
+      std::fill(buffer.begin(), buffer.end(), static_cast<double>(k));
+      benchmark::DoNotOptimize(buffer.data());
+      benchmark::ClobberMemory();
+    }
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kWideBlock * kWideBlocks * kWideDim));
+}
+BENCHMARK(BM_WriteDoublesWide)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 template <int D>
 void BM_Halton(benchmark::State& state) {

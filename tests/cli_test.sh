@@ -50,7 +50,9 @@ expect_exit 2 "axis 0 has 1 for radius 0.3" -- generate dunbar-humphreys --radiu
 # Coordinates whose spacing is near 1e-4 of the radius: a clear failure, not a hang or a bad set.
 expect_exit 1 "the coordinates are too coarse for this radius" -- generate dunbar-humphreys --radius 0.2 --torus \
   --bounds 10000000000000,10000000000000,10000000000002,10000000000002
-expect_exit 2 "dimension 4 is not supported" -- generate random --count 10 --dim 4
+expect_exit 2 "dimension 4 is not supported" -- generate jittered --count 10 --dim 4
+expect_exit 2 "dimension 21202 is not supported (supported: 1-21201)" -- generate sobol --count 10 --dim 21202
+expect_exit 2 "GiB" -- generate sobol --count 100000000 --dim 21201
 expect_exit 2 "axis 0 is empty" -- generate random --count 10 --bounds 1,0,1,1
 expect_exit 2 "bounds needs 4 values" -- generate random --count 10 --bounds 0,0,1
 expect_exit 2 "non-finite bound" -- generate random --count 10 --bounds 0,0,inf,1

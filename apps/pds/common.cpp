@@ -57,7 +57,7 @@ std::string methods_help() {
     os << "  " << m.name << std::string(m.name.size() < 18 ? 18 - m.name.size() : 1, ' ') << m.summary << "\n";
     const std::string promises = guarantees_of(m);
     os << std::string(20, ' ') << "takes --" << (m.takes_count && m.takes_radius ? "count or --radius" : sizing_of(m))
-       << (promises.empty() ? "" : "; " + promises) << "\n";
+       << "; dims " << m.dims.text() << (promises.empty() ? "" : "; " + promises) << "\n";
     for (const MethodParam& p : m.params)
       os << std::string(20, ' ') << "--param " << p.name << "=" << p.default_value << "  " << p.help << "\n";
   }

@@ -26,9 +26,11 @@ void require_radius(double r, const char* name = "radius");
 void require_count(std::uint64_t n, std::uint64_t max_points);
 
 /// Throws InvalidArgument if `points` points in dimension `dim` exceed
-/// max_points or would need more memory than this machine has. `what` says
-/// where the estimate came from, for the message.
-void require_point_budget(double points, int dim, std::uint64_t max_points, const std::string& what);
+/// max_points or would need more memory than this machine has, counting
+/// `copies` times the points' doubles (a sampler's working structures: 4).
+/// `what` says where the estimate came from, for the message.
+void require_point_budget(double points, int dim, std::uint64_t max_points, const std::string& what,
+                          double copies = 4.0);
 
 /// The most points a set with minimum distance r can hold in a region of the
 /// given volume (densest packing of disks/balls of radius r/2; a box may hold

@@ -39,13 +39,14 @@ void require_count(std::uint64_t n, std::uint64_t max_points) {
                           " points (raise it with --max-points)");
 }
 
-void require_point_budget(double points, int dim, std::uint64_t max_points, const std::string& what) {
+void require_point_budget(double points, int dim, std::uint64_t max_points, const std::string& what,
+                          double copies) {
   if (!(points <= static_cast<double>(max_points)))
     throw InvalidArgument(what + " could produce up to " + detail::format_number(points) +
                           " points, above the cap of " + std::to_string(max_points) + " (raise it with --max-points)");
   // The points themselves plus the working structures of a sampler: about
   // four copies. Refuse before allocating rather than fail half-way.
-  const double bytes = points * dim * sizeof(double) * 4.0;
+  const double bytes = points * dim * sizeof(double) * copies;
   const double available = physical_memory_bytes();
   if (bytes > available)
     throw InvalidArgument(what + " would need about " + detail::format_number(bytes / (1 << 30)) +

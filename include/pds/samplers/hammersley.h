@@ -29,4 +29,13 @@ struct HammersleyParams {
 template <int D>
 PointSet<D> hammersley(const HammersleyParams& params, const Domain<D>& domain, std::uint64_t seed);
 
+/// The most axes: i / N, then one prime base each.
+inline constexpr int kHammersleyMaxDim = kRadixPrimes + 1;
+
+/// The same in a run-time dimension, 1 to kHammersleyMaxDim (box.dim()), point
+/// after point; the typed version is this one.
+PointCloud hammersley(const HammersleyParams& params, const CloudBox& box, std::uint64_t seed);
+/// Writes the points to out (count * box.dim() doubles).
+void hammersley_fill(const HammersleyParams& params, const CloudBox& box, std::uint64_t seed, double* out);
+
 }  // namespace pds

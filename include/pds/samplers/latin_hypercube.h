@@ -9,6 +9,7 @@
 #include "pds/domain.h"
 #include "pds/point.h"
 #include "pds/rng.h"
+#include "pds/samplers/low_discrepancy.h"
 
 namespace pds {
 
@@ -25,6 +26,12 @@ struct LatinHypercubeParams {
 /// Invalid: count 0 or above 2^32.
 template <int D>
 PointSet<D> latin_hypercube(const LatinHypercubeParams& params, const Domain<D>& domain, std::uint64_t seed);
+
+/// The same in a run-time dimension (box.dim(), any), point after point; the
+/// typed version is this one. Axis a's permutation and jitter come from
+/// streams keyed by a alone, so the first axes do not depend on the dimension.
+PointCloud latin_hypercube(const LatinHypercubeParams& params, const CloudBox& box, std::uint64_t seed);
+void latin_hypercube_fill(const LatinHypercubeParams& params, const CloudBox& box, std::uint64_t seed, double* out);
 
 /// Uniform coordinates within the slabs [s/n, (s+1)/n) of [0, 1), n < 2^40.
 /// A coordinate is drawn from 2^b equally spaced values centred in the slab's

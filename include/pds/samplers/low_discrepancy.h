@@ -18,6 +18,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "pds/domain.h"
 #include "pds/point.h"
@@ -42,10 +43,6 @@ void require_index_range(const std::string& method, std::uint64_t first, std::ui
 
 /// Throws InvalidArgument unless `value` names a Scramble.
 Scramble scramble_from(const std::string& method, int value);
-
-
-/// The bases of the Halton sequence, one per axis.
-inline constexpr std::array<unsigned, 8> kPrimes{2, 3, 5, 7, 11, 13, 17, 19};
 
 /// K and B^K for base B (see the top of this file).
 template <unsigned B>
@@ -234,98 +231,68 @@ Point<D> from_unit_cube(const Point<D>& u, const Domain<D>& domain) {
   return UnitCubeMap<D>(domain)(u);
 }
 
-/// Radical inverses of consecutive indices in base B, with optional digit
-/// permutation, at a table look-up, an addition and a division each. An index
-/// i = h L + l (L = B^k <= 1024) has R(i) = low[l] + high(h): the k low digits
-/// of i only set the k leading digits of R. low[] is tabulated once; high(h)
-/// is recomputed every L indices.
-template <unsigned B>
-class RadicalInverseWalk {
- public:
-  static constexpr std::uint32_t kLow = [] {
-    std::uint32_t l = 1;
-    while (l * B <= 1024) l *= B;
-    return l;
-  }();
+/// A box in a run-time dimension, lo[a] <= x[a] < hi[a]: what the run-time
+/// paths of the sequences and designs fill (the typed Domain<D> versions call
+/// the same code through CloudBox::of). The bounds are validated by the caller
+/// (GenerateRequest::bounds, Domain<D>::validate).
+struct CloudBox {
+  std::vector<double> lo, hi;
 
-  /// Starts at `index`; `perm` (null: no scrambling) must outlive the walk.
-  RadicalInverseWalk(std::uint32_t index, const DigitPermutation<B>* perm)
-      : perm_(perm), tail_(perm ? perm->tail() : 0.0), high_(index / kLow), low_index_(index % kLow) {
-    for (std::uint32_t l = 0; l < kLow; ++l) low_[l] = permuted(reverse_digits<B>(l));
-    high_r_ = high_part(high_);
+  int dim() const { return static_cast<int>(lo.size()); }
+  static CloudBox unit(int dim) {
+    return {std::vector<double>(static_cast<std::size_t>(dim), 0.0), std::vector<double>(static_cast<std::size_t>(dim), 1.0)};
   }
-
-  /// The radical inverse of the current index; then moves to the next index.
-  double next() {
-    const double x = digits_to_unit<B>(low_[low_index_] + high_r_, tail_);
-    if (++low_index_ == kLow) {
-      low_index_ = 0;
-      high_r_ = high_part(++high_);
-    }
-    return x;
+  template <int D>
+  static CloudBox of(const Domain<D>& domain) {
+    return {std::vector<double>(domain.lo.begin(), domain.lo.end()), std::vector<double>(domain.hi.begin(), domain.hi.end())};
   }
-
- private:
-  std::uint64_t permuted(std::uint64_t r) const { return perm_ ? perm_->apply(r) : r; }
-  // The digits of h L, less the permuted zeros of its k low digits that low[] holds.
-  std::uint64_t high_part(std::uint64_t h) const {
-    const std::uint64_t index = h * kLow;
-    if (index >= (std::uint64_t{1} << 32)) return 0;  // past the last index: never read
-    return permuted(reverse_digits<B>(static_cast<std::uint32_t>(index))) - low_[0];
-  }
-
-  const DigitPermutation<B>* perm_;
-  double tail_;
-  std::uint64_t high_;
-  std::uint32_t low_index_;
-  std::uint64_t high_r_ = 0;
-  std::array<std::uint64_t, kLow> low_;
 };
 
-namespace detail {
-
-template <int D, int Lead, std::size_t... A, class LeadFn>
-void fill_radical_inverse_points(std::index_sequence<A...>, PointSet<D>& points, std::uint32_t first, Scramble scramble,
-                                 const std::array<std::uint64_t, D>& keys, const Domain<D>& domain, LeadFn& lead) {
-  const std::size_t n = points.size();
-  const UnitCubeMap<D> to_domain(domain);
-  if (scramble == Scramble::owen) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto index = static_cast<std::uint32_t>(first + i);
-      Point<D> u;
-      lead(index, u);
-      ((u[Lead + A] = owen_scramble<kPrimes[A]>(reverse_digits<kPrimes[A]>(index), keys[Lead + A])), ...);
-      points[i] = to_domain(u);
+/// UnitCubeMap in a run-time dimension: the same arithmetic, so the same bytes.
+class BoxMap {
+ public:
+  explicit BoxMap(const CloudBox& box) : lo_(box.lo), extent_(box.lo.size()), top_(box.lo.size()) {
+    for (std::size_t i = 0; i < lo_.size(); ++i) {
+      extent_[i] = box.hi[i] - box.lo[i];
+      top_[i] = std::nextafter(box.hi[i], box.lo[i]);
     }
-    return;
   }
-  const std::tuple<DigitPermutation<kPrimes[A]>...> perms{DigitPermutation<kPrimes[A]>(keys[Lead + A])...};
-  const bool permute = scramble == Scramble::permute_digits;
-  std::tuple<RadicalInverseWalk<kPrimes[A]>...> walks{
-      RadicalInverseWalk<kPrimes[A]>(first, permute ? &std::get<A>(perms) : nullptr)...};
-  for (std::size_t i = 0; i < n; ++i) {
-    Point<D> u;
-    lead(static_cast<std::uint32_t>(first + i), u);
-    ((u[Lead + A] = std::get<A>(walks).next()), ...);
-    points[i] = to_domain(u);
-  }
-}
+  double operator()(int axis, double u) const { return std::min(lo_[axis] + u * extent_[axis], top_[axis]); }
+  // For loops that map a whole point at once.
+  const double* lo() const { return lo_.data(); }
+  const double* extent() const { return extent_.data(); }
+  const double* top() const { return top_.data(); }
 
-}  // namespace detail
+ private:
+  std::vector<double> lo_, extent_, top_;
+};
 
-/// Fills points[i] with point first + i of a radical-inverse construction:
-/// axes Lead ... D-1 are the radical inverses of the index in bases 2, 3, 5,
-/// ... (scrambled as asked, axis a with keys[a]), axes below Lead are set by
-/// lead(index, u) (Hammersley's i / N); then the unit cube is mapped to the
-/// domain. Unscrambled and digit-permuted runs walk the indices (RadicalInverseWalk);
-/// Owen scrambling walks every digit of every coordinate (owen_scramble).
-template <int D, int Lead = 0, class LeadFn>
-void fill_radical_inverse_points(PointSet<D>& points, std::uint32_t first, Scramble scramble,
-                                 const std::array<std::uint64_t, D>& keys, const Domain<D>& domain, LeadFn&& lead) {
-  static_assert(D - Lead <= static_cast<int>(kPrimes.size()));
-  detail::fill_radical_inverse_points<D, Lead>(std::make_index_sequence<D - Lead>{}, points, first, scramble, keys,
-                                               domain, lead);
-}
+/// Throws InvalidArgument unless count points of dimension dim fit in memory
+/// addressable here (count * dim doubles); returns count * dim.
+std::size_t cloud_doubles(const std::string& method, std::uint64_t count, int dim);
+
+/// The Halton bases: the first kRadixPrimes primes (2, 3, 5, ..., 104729),
+/// computed once. Halton takes one per axis, Hammersley one per axis past the first.
+inline constexpr int kRadixPrimes = 10000;
+unsigned nth_prime(int k);  // k in [0, kRadixPrimes)
+
+/// How an unscrambled radical inverse is turned into a double.
+enum class RadicalRounding : int {
+  correct = 0,  // the digits as an exact integer, one correctly rounded division
+  scipy = 1,    // SciPy's van_der_corput: sum of digit * b^-k, b^-k by repeated division (a few ulps off)
+};
+
+/// Fills out[i * dim + a], i < count, a in [lead, dim), with the radical
+/// inverse of index first + i in base nth_prime(a - lead), scrambled as asked
+/// (axis a's key: scramble_key(seed, method_tag, a)) and mapped by `map`;
+/// axes below lead are left alone. Bases up to 19 draw their digit
+/// permutations exactly as DigitPermutation / owen_scramble do; larger bases
+/// use random affine digit permutations d -> (alpha d + beta) mod b (Matousek
+/// 1998), which keep nets nets and every scrambled point uniform.
+/// Unscrambled, `rounding` says how digits become a double.
+void fill_radical_inverses(std::uint32_t first, std::uint64_t count, int dim, int lead, Scramble scramble,
+                           RadicalRounding rounding, std::uint64_t seed, std::uint64_t method_tag, const BoxMap& map,
+                           double* out);
 
 /// Maps every point of a set built in the unit cube to the domain, in place.
 template <int D>

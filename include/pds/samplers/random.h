@@ -7,6 +7,7 @@
 #include "pds/domain.h"
 #include "pds/point.h"
 #include "pds/rng.h"
+#include "pds/samplers/low_discrepancy.h"
 
 namespace pds {
 
@@ -20,6 +21,11 @@ struct WhiteNoiseParams {
 /// Invalid: count 0 or above the point cap (checked by generate()).
 template <int D>
 PointSet<D> white_noise(const WhiteNoiseParams& params, const Domain<D>& domain, std::uint64_t seed);
+
+/// The same in a run-time dimension (box.dim(), any), point after point,
+/// coordinate after coordinate from one stream: the typed version is this one.
+PointCloud white_noise(const WhiteNoiseParams& params, const CloudBox& box, std::uint64_t seed);
+void white_noise_fill(const WhiteNoiseParams& params, const CloudBox& box, std::uint64_t seed, double* out);
 
 /// A point drawn uniformly from the domain.
 template <int D>

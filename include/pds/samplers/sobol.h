@@ -11,8 +11,10 @@
 
 namespace pds {
 
-/// Axes for which direction numbers are embedded (Joe & Kuo's first rows).
-inline constexpr int kSobolMaxDim = 8;
+/// Axes for which direction numbers are embedded: axis 0 (van der Corput)
+/// and Joe & Kuo's new-joe-kuo-6.21201 rows d = 2 ... 21201
+/// (data/sobol/, scripts/sobol_directions.py).
+inline constexpr int kSobolMaxDim = 21201;
 
 struct SobolParams {
   std::uint64_t count = 1024;  // points returned, >= 1
@@ -22,7 +24,9 @@ struct SobolParams {
 
 /// Points first, ..., first + count - 1 of the D-dimensional Sobol sequence in
 /// Gray-code order (the order of Joe and Kuo's reference generator, MATLAB's
-/// sobolset and SciPy: (0,0), (1/2,1/2), (3/4,1/4), (1/4,3/4), ...), mapped
+/// sobolset and SciPy: (0,0), (1/2,1/2), (3/4,1/4), (1/4,3/4), ...; index i
+/// is row i of scipy.stats.qmc.Sobol(d, scramble=False).random, which
+/// starts at the origin, and the unscrambled points equal SciPy's), mapped
 /// from the unit cube to the domain. Progressive: any range costs only its
 /// own length. Permuting digits with permute_digits is, in base 2, an XOR
 /// with one random mask per axis (a random digital shift).
@@ -34,6 +38,13 @@ struct SobolParams {
 /// Invalid: first + count above 2^32.
 template <int D>
 PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint64_t seed);
+
+/// The same in a run-time dimension, 1 to kSobolMaxDim (box.dim()), point
+/// after point; the typed version is this one.
+PointCloud sobol(const SobolParams& params, const CloudBox& box, std::uint64_t seed);
+/// Writes the points to out (count * box.dim() doubles): a caller can fill
+/// one buffer block after block (first = 0, n, 2n, ...).
+void sobol_fill(const SobolParams& params, const CloudBox& box, std::uint64_t seed, double* out);
 
 /// The 32 direction numbers of one axis (0-based, axis < kSobolMaxDim): bit k
 /// of an index's Gray code contributes direction[k] to the coordinate * 2^32.

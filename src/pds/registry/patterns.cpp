@@ -12,6 +12,16 @@
 #include "pds/samplers/strata.h"
 
 namespace pds::registry_detail {
+namespace {
+
+/// The request's box in its run-time dimension (validated by generate()).
+CloudBox box_of(const GenerateRequest& r) {
+  CloudBox box;
+  r.bounds(box.lo, box.hi);
+  return box;
+}
+
+}  // namespace
 
 const Method& white_noise_method() {
   static const Method method{
@@ -22,10 +32,8 @@ const Method& white_noise_method() {
       .takes_count = true,
       .exact_count = true,
       .compare = true,
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) { return white_noise({*r.count}, domain, r.seed); });
-          },
+      .dims = {1, kMaxCloudDim},
+      .run = [](const GenerateRequest& r) { return white_noise({*r.count}, box_of(r), r.seed); },
   };
   return method;
 }
@@ -122,10 +130,8 @@ const Method& latin_hypercube_method() {
       .citation = "M. D. McKay, R. J. Beckman and W. J. Conover, Technometrics 21(2), 1979",
       .takes_count = true,
       .exact_count = true,
-      .run =
-          [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) { return latin_hypercube({*r.count}, domain, r.seed); });
-          },
+      .dims = {1, kMaxCloudDim},
+      .run = [](const GenerateRequest& r) { return latin_hypercube({*r.count}, box_of(r), r.seed); },
   };
   return method;
 }

@@ -70,8 +70,11 @@ const Method& find_method(const std::string& name) {
 std::vector<int> DimRange::tested() const {
   std::vector<int> dims;
   for (int d = lo; d <= hi && d <= kMaxDim; ++d) dims.push_back(d);
-  for (int d : {hi > 64 ? 64 : 0, hi > 1000 ? 1000 : 0, hi > kMaxDim ? hi : 0})
-    if (d > kMaxDim && d >= lo) dims.push_back(d);
+  // The top of the range too, up to Sobol's 21,201; past that (random and
+  // Latin hypercube go to kMaxCloudDim) memory, not code, is what changes.
+  const int top = hi <= 21201 ? hi : 21201;
+  for (int d : {hi > 64 ? 64 : 0, hi > 1000 ? 1000 : 0, top > kMaxDim ? top : 0})
+    if (d > kMaxDim && d >= lo && (dims.empty() || d > dims.back())) dims.push_back(d);
   return dims;
 }
 
@@ -135,6 +138,10 @@ void validate(const Method& m, const GenerateRequest& r) {
   if (r.count) {
     if (!m.takes_count) throw InvalidArgument(m.name + " does not take --count (use --radius)");
     require_count(*r.count, r.max_points);
+    // count x dim doubles, twice (the set and a copy on its way out), refused
+    // before anything is allocated.
+    require_point_budget(static_cast<double>(*r.count), r.dim, r.max_points,
+                         "count " + std::to_string(*r.count) + " in dimension " + std::to_string(r.dim), 2.0);
   }
   if (!r.count && !r.radius) {
     if (m.takes_count && m.takes_radius) throw InvalidArgument(m.name + " needs --count or --radius");

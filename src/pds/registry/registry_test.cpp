@@ -72,8 +72,16 @@ TEST(Registry, RejectsUnsupportedDimensions) {
   for (int dim : {0, 1, 4, -2}) {
     GenerateRequest r = with_count(16);
     r.dim = dim;
-    expect_rejected("random", r, "dimension " + std::to_string(dim) + " is not supported");
+    expect_rejected("jittered", r, "dimension " + std::to_string(dim) + " is not supported");  // 2-3
   }
+  for (int dim : {0, -2, kMaxCloudDim + 1}) {
+    GenerateRequest r = with_count(16);
+    r.dim = dim;
+    expect_rejected("random", r, "dimension " + std::to_string(dim) + " is not supported");  // 1-2^20
+  }
+  GenerateRequest r = with_count(16);
+  r.dim = 21202;
+  expect_rejected("sobol", r, "sobol: dimension 21202 is not supported (supported: 1-21201)");
 }
 
 TEST(Registry, RejectsBadBounds) {

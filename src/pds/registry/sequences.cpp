@@ -29,11 +29,20 @@ MethodParam first_param() {
           .help = "index of the first point: --count points from here continue an earlier run"};
 }
 
+/// The request's box in its run-time dimension (validated by generate()).
+CloudBox box_of(const GenerateRequest& r) {
+  CloudBox box;
+  r.bounds(box.lo, box.hi);
+  return box;
+}
+
 /// The entry of a sequence that takes `first` and `scramble` (Halton, Sobol):
-/// every field but its name, summary and paper is the same.
-template <class Params>
-Method sequence_method(std::string name, std::string summary, std::string citation,
-                       PointCloud (*run)(const GenerateRequest&)) {
+/// every field but its name, summary, paper, dimensions and extra parameters
+/// is the same.
+Method sequence_method(std::string name, std::string summary, std::string citation, DimRange dims,
+                       PointCloud (*run)(const GenerateRequest&), std::vector<MethodParam> extra = {}) {
+  std::vector<MethodParam> params = {scramble_param(), first_param()};
+  params.insert(params.end(), extra.begin(), extra.end());
   return Method{.name = std::move(name),
                 .family = Family::sequence,
                 .docs = "docs/low-discrepancy.md",
@@ -43,32 +52,40 @@ Method sequence_method(std::string name, std::string summary, std::string citati
                 .exact_count = true,
                 .progressive = true,
                 .deterministic = true,
-                .params = {scramble_param(), first_param()},
+                .dims = dims,
+                .params = std::move(params),
                 .run = run};
 }
 
-/// Params{count, first, scramble} from the request, for `sample`.
-template <class Params, class Sample>
-PointCloud run_sequence(const GenerateRequest& r, const char* name, Sample sample) {
-  return run_typed(r, [&](const auto& domain) {
-    const Params params{.count = *r.count,
-                        .first = static_cast<std::uint64_t>(r.param("first", 0)),
-                        .scramble = scramble_from(name, static_cast<int>(r.param("scramble", 0)))};
-    return sample(params, domain, r.seed);
-  });
+/// Params{count, first, scramble} from the request.
+template <class Params>
+Params sequence_params(const GenerateRequest& r, const char* name) {
+  Params params;
+  params.count = *r.count;
+  params.first = static_cast<std::uint64_t>(r.param("first", 0));
+  params.scramble = scramble_from(name, static_cast<int>(r.param("scramble", 0)));
+  return params;
 }
 
 }  // namespace
 
 const Method& halton_method() {
-  static const Method method = sequence_method<HaltonParams>(
-      "halton", "Halton sequence (radical inverses in bases 2, 3, 5), optionally scrambled",
+  static const Method method = sequence_method(
+      "halton", "Halton sequence (radical inverses in the first primes, one per axis), optionally scrambled",
       "J. H. Halton, On the efficiency of certain quasi-random sequences of points in evaluating "
       "multi-dimensional integrals, Numerische Mathematik 2, 1960",
+      {1, kHaltonMaxDim},
       [](const GenerateRequest& r) {
-        return run_sequence<HaltonParams>(
-            r, "halton", [](const auto& p, const auto& d, std::uint64_t seed) { return halton(p, d, seed); });
-      });
+        auto params = sequence_params<HaltonParams>(r, "halton");
+        params.rounding = r.param("rounding", 1) != 0 ? RadicalRounding::scipy : RadicalRounding::correct;
+        return halton(params, box_of(r), r.seed);
+      },
+      {{.name = "rounding",
+        .default_value = 1,
+        .min = 0,
+        .max = 1,
+        .integer = true,
+        .help = "unscrambled only: 1, SciPy's sums (equal to qmc.Halton(scramble=False)); 0, correctly rounded"}});
   return method;
 }
 
@@ -77,13 +94,14 @@ const Method& hammersley_method() {
       .name = "hammersley",
       .family = Family::sequence,
       .docs = "docs/low-discrepancy.md",
-      .summary = "Hammersley set (i/N, radical inverses in bases 2, 3), optionally scrambled",
+      .summary = "Hammersley set (i/N, then radical inverses in the first primes), optionally scrambled",
       .citation =
           "J. M. Hammersley, Monte Carlo methods for solving multivariable problems, Annals of the New York "
           "Academy of Sciences 86, 1960",
       .takes_count = true,
       .exact_count = true,
       .deterministic = true,
+      .dims = {1, kHammersleyMaxDim},
       .params = {scramble_param(),
                  first_param(),
                  {.name = "size",
@@ -94,28 +112,21 @@ const Method& hammersley_method() {
                   .help = "N, the size of the whole set when --count asks for a part of it (0: first + count)"}},
       .run =
           [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
-              const HammersleyParams params{
-                  .count = *r.count,
-                  .first = static_cast<std::uint64_t>(r.param("first", 0)),
-                  .size = static_cast<std::uint64_t>(r.param("size", 0)),
-                  .scramble = scramble_from("hammersley", static_cast<int>(r.param("scramble", 0)))};
-              return hammersley(params, domain, r.seed);
-            });
+            auto params = sequence_params<HammersleyParams>(r, "hammersley");
+            params.size = static_cast<std::uint64_t>(r.param("size", 0));
+            return hammersley(params, box_of(r), r.seed);
           },
   };
   return method;
 }
 
 const Method& sobol_method() {
-  static const Method method = sequence_method<SobolParams>(
+  static const Method method = sequence_method(
       "sobol", "Sobol sequence (Joe-Kuo direction numbers, Gray-code order), optionally Owen-scrambled",
       "I. M. Sobol, On the distribution of points in a cube and the approximate evaluation of integrals, "
       "USSR Comput. Math. Math. Phys. 7(4), 1967; S. Joe and F. Y. Kuo, SIAM J. Sci. Comput. 30(5), 2008",
-      [](const GenerateRequest& r) {
-        return run_sequence<SobolParams>(
-            r, "sobol", [](const auto& p, const auto& d, std::uint64_t seed) { return sobol(p, d, seed); });
-      });
+      {1, kSobolMaxDim},
+      [](const GenerateRequest& r) { return sobol(sequence_params<SobolParams>(r, "sobol"), box_of(r), r.seed); });
   return method;
 }
 

@@ -7,36 +7,62 @@
 // (t,m,s)-nets and (t,s)-sequences, 1995 (nested scrambling).
 //
 // Method: axis k of point i is the radical inverse of i in base p_k, the k-th
-// prime; digits are exact integers (low_discrepancy.h), so the unscrambled
-// sequence is exact and any index range is computed directly.
+// prime (fill_radical_inverses, one code path for every dimension); digits
+// are exact integers (low_discrepancy.h), so scrambling is exact and any index
+// range is computed directly. Unscrambled, the default sums the digits as
+// SciPy does (equal to scipy.stats.qmc.Halton(d, scramble=False) bit for bit);
+// rounding=correct gives the correctly rounded radical inverses instead.
 // Guarantees: the first N points have star discrepancy O(log^D N / N); in 2D
 // the first 2^a 3^b points stratify the 2^a x 3^b grid exactly.
 // Complexity: O(count * D), a few operations a coordinate; Owen scrambling
 // walks the K digits of a coordinate (K = 32, 21, 14 for bases 2, 3, 5) with a
 // hash per node (base 2: per 6 levels).
 // Why not GSL's gsl_qrng_halton: it only steps forward from index 1, has no
-// scrambling and sums digits in floating point (a few ulps off the exact
-// values); the tests use it as a reference.
-// Limits: indices below 2^32; higher axes (large primes) correlate visibly in
+// scrambling and sums digits in floating point (its own order, a few ulps off
+// the exact values); the tests use it as a reference.
+// Limits: indices below 2^32; 10,000 axes (the first 10,000 primes); higher axes (large primes) correlate visibly in
 // short prefixes, which is why renderers scramble them.
 
 #include "pds/samplers/halton.h"
 
+#include "pds/error.h"
+
 namespace pds {
+
+void halton_fill(const HaltonParams& params, const CloudBox& box, std::uint64_t seed, double* out) {
+  const int dim = box.dim();
+  if (dim < 1 || dim > kHaltonMaxDim)
+    throw InvalidArgument("halton: dimension " + std::to_string(dim) + " is not supported (supported: 1 to " +
+                          std::to_string(kHaltonMaxDim) + ", one prime base per axis)");
+  require_index_range("halton", params.first, params.count);
+  fill_radical_inverses(static_cast<std::uint32_t>(params.first), params.count, dim, 0, params.scramble,
+                        params.rounding, seed, 1, BoxMap(box), out);
+}
+
+PointCloud halton(const HaltonParams& params, const CloudBox& box, std::uint64_t seed) {
+  PointCloud cloud{box.dim(), {}};
+  cloud.coords.resize(cloud_doubles("halton", params.count, box.dim()));
+  halton_fill(params, box, seed, cloud.coords.data());
+  return cloud;
+}
 
 template <int D>
 PointSet<D> halton(const HaltonParams& params, const Domain<D>& domain, std::uint64_t seed) {
-  static_assert(D <= static_cast<int>(kPrimes.size()));
   require_index_range("halton", params.first, params.count);
-  std::array<std::uint64_t, D> keys;
-  for (int a = 0; a < D; ++a) keys[a] = scramble_key(seed, 1, a);
   PointSet<D> points(params.count);
-  fill_radical_inverse_points<D>(points, static_cast<std::uint32_t>(params.first), params.scramble, keys, domain,
-                                 [](std::uint32_t, Point<D>&) {});
+  halton_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }
 
-template PointSet<2> halton<2>(const HaltonParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> halton<3>(const HaltonParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) template PointSet<D> halton<D>(const HaltonParams&, const Domain<D>&, std::uint64_t);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

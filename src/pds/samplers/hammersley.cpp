@@ -9,8 +9,9 @@
 // because N is known in advance; in 2D with N = 2^m, a (0, m, 2)-net in base 2,
 // and Owen or digit scrambling of axis 1 keeps it one (they permute digits of
 // points sharing a prefix alike).
-// Complexity: O(count * D). Limits: N fixed in advance (a prefix of the set is
-// not well distributed along axis 0); N <= 2^32.
+// Complexity: O(count * D), one code path for every dimension
+// (fill_radical_inverses). Limits: N fixed in advance (a prefix of the set is
+// not well distributed along axis 0); N <= 2^32; 10,001 axes.
 
 #include "pds/samplers/hammersley.h"
 
@@ -18,24 +19,51 @@
 
 namespace pds {
 
-template <int D>
-PointSet<D> hammersley(const HammersleyParams& params, const Domain<D>& domain, std::uint64_t seed) {
-  static_assert(D - 1 <= static_cast<int>(kPrimes.size()));
+void hammersley_fill(const HammersleyParams& params, const CloudBox& box, std::uint64_t seed, double* out) {
+  const int dim = box.dim();
+  if (dim < 1 || dim > kHammersleyMaxDim)
+    throw InvalidArgument("hammersley: dimension " + std::to_string(dim) + " is not supported (supported: 1 to " +
+                          std::to_string(kHammersleyMaxDim) + ")");
   require_index_range("hammersley", params.first, params.count);
   const std::uint64_t size = params.size ? params.size : params.first + params.count;
   if (params.first + params.count > size)
     throw InvalidArgument("hammersley: points first " + std::to_string(params.first) + " + count " +
                           std::to_string(params.count) + " exceed the set's size " + std::to_string(size));
-  std::array<std::uint64_t, D> keys;
-  for (int a = 0; a < D; ++a) keys[a] = scramble_key(seed, 2, a);
+  const BoxMap map(box);
+  // Axes 1 and up: Halton's radical inverses, correctly rounded (SciPy has no Hammersley set to follow).
+  fill_radical_inverses(static_cast<std::uint32_t>(params.first), params.count, dim, 1, params.scramble,
+                        RadicalRounding::correct, seed, 2, map, out);
   const double n = static_cast<double>(size);
+  const auto stride = static_cast<std::size_t>(dim);
+  for (std::uint64_t i = 0; i < params.count; ++i)
+    out[i * stride] = map(0, static_cast<double>(params.first + i) / n);
+}
+
+PointCloud hammersley(const HammersleyParams& params, const CloudBox& box, std::uint64_t seed) {
+  PointCloud cloud{box.dim(), {}};
+  cloud.coords.resize(cloud_doubles("hammersley", params.count, box.dim()));
+  hammersley_fill(params, box, seed, cloud.coords.data());
+  return cloud;
+}
+
+template <int D>
+PointSet<D> hammersley(const HammersleyParams& params, const Domain<D>& domain, std::uint64_t seed) {
+  require_index_range("hammersley", params.first, params.count);
   PointSet<D> points(params.count);
-  fill_radical_inverse_points<D, 1>(points, static_cast<std::uint32_t>(params.first), params.scramble, keys, domain,
-                                    [n](std::uint32_t index, Point<D>& u) { u[0] = static_cast<double>(index) / n; });
+  hammersley_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }
 
-template PointSet<2> hammersley<2>(const HammersleyParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> hammersley<3>(const HammersleyParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) \
+  template PointSet<D> hammersley<D>(const HammersleyParams&, const Domain<D>&, std::uint64_t);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "pds/error.h"
+#include "pds/registry.h"
+#include "pds/samplers/halton.h"
+#include "pds/samplers/random.h"
 #include "stratification.h"
 
 namespace pds {
@@ -44,6 +47,37 @@ TEST(Hammersley, SeedsMatterOnlyWhenScrambled) {
   EXPECT_EQ(hammersley<2>({100}, domain, 1), hammersley<2>({100}, domain, 2));
   EXPECT_NE(hammersley<2>({100, 0, 0, Scramble::owen}, domain, 1),
             hammersley<2>({100, 0, 0, Scramble::owen}, domain, 2));
+}
+
+
+TEST(Hammersley, RunTimeDimensionsAreIndexThenHaltonAxes) {
+  // Unscrambled: axis 0 is i / N, axis a the correctly rounded Halton axis a - 1.
+  const std::uint64_t n = 300;
+  const PointCloud h = hammersley({n}, CloudBox::unit(1001), 0);
+  const PointCloud halt = halton({n, 0, Scramble::none, RadicalRounding::correct}, CloudBox::unit(1000), 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    ASSERT_EQ(h.point(i)[0], static_cast<double>(i) / n);
+    for (int a = 1; a < 1001; ++a) ASSERT_EQ(h.point(i)[a], halt.point(i)[a - 1]) << "point " << i << " axis " << a;
+  }
+  const auto domain = Domain<4>::box({{0, 0, -1, 2}}, {{1, 3, 0, 2.5}});
+  for (Scramble s : kAllScrambles)
+    EXPECT_EQ(hammersley({200, 5, 400, s}, CloudBox::of(domain), 3),
+              PointCloud::from<4>(hammersley<4>({200, 5, 400, s}, domain, 3)));
+  EXPECT_THROW(hammersley({4}, CloudBox::unit(kHammersleyMaxDim + 1), 0), InvalidArgument);
+  EXPECT_EQ(generate("hammersley", {.dim = kHammersleyMaxDim, .count = 3}).size(), 3u);
+}
+
+TEST(WhiteNoise, RunTimeDimensionsAreOneCodePath) {
+  const auto domain = Domain<7>::unit();
+  EXPECT_EQ(white_noise({300}, CloudBox::of(domain), 8), PointCloud::from<7>(white_noise<7>({300}, domain, 8)));
+  CloudBox box = CloudBox::unit(2000);
+  box.lo[7] = -1e-9;
+  box.hi[7] = 0;
+  const PointCloud c = white_noise({100}, box, 2);
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (int a = 0; a < 2000; ++a) ASSERT_TRUE(c.point(i)[a] >= box.lo[a] && c.point(i)[a] < box.hi[a]);
+  EXPECT_EQ(c, white_noise({100}, box, 2));
+  EXPECT_NE(c, white_noise({100}, box, 3));
 }
 
 }  // namespace

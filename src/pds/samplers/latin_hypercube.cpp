@@ -9,7 +9,8 @@
 // Method: for each axis an independent uniform permutation pi_a of the N slabs;
 // point i lies in slab pi_a(i) along axis a, uniformly within it.
 // Guarantees: one point per slab on every axis (latin_hypercube.h).
-// Complexity: O(N D) time, O(N) extra memory for one permutation at a time.
+// Complexity: O(N D) time, O(N) extra memory for one permutation at a time;
+// one code path for every dimension (latin_hypercube_fill).
 // Limits: the projections are perfectly stratified, the joint distribution is
 // not (the whole set may cluster); multi-jittered adds the joint strata.
 
@@ -37,24 +38,47 @@ std::vector<std::uint32_t> random_permutation(std::uint32_t n, Rng& rng) {
   return p;
 }
 
-template <int D>
-PointSet<D> latin_hypercube(const LatinHypercubeParams& params, const Domain<D>& domain, std::uint64_t seed) {
+void latin_hypercube_fill(const LatinHypercubeParams& params, const CloudBox& box, std::uint64_t seed, double* out) {
   const std::uint64_t n = params.count;
   if (n < 1 || n > (std::uint64_t{1} << 32))
     throw InvalidArgument("latin-hypercube: count must be in [1, 2^32], got " + std::to_string(n));
-  PointSet<D> points(n);
-  for (int a = 0; a < D; ++a) {
+  const auto dim = static_cast<std::size_t>(box.dim());
+  const BoxMap map(box);
+  const SlabJitter within(n);
+  for (std::size_t a = 0; a < dim; ++a) {
     Rng permute(seed, {0, static_cast<std::uint64_t>(a)});
     Rng jitter(seed, {1, static_cast<std::uint64_t>(a)});
     const std::vector<std::uint32_t> slab = random_permutation(static_cast<std::uint32_t>(n), permute);
-    const SlabJitter within(n);
-    for (std::uint64_t i = 0; i < n; ++i) points[i][a] = within(slab[i], jitter);
+    for (std::uint64_t i = 0; i < n; ++i) out[i * dim + a] = map(static_cast<int>(a), within(slab[i], jitter));
   }
-  map_to_domain(points, domain);
+}
+
+PointCloud latin_hypercube(const LatinHypercubeParams& params, const CloudBox& box, std::uint64_t seed) {
+  PointCloud cloud{box.dim(), {}};
+  cloud.coords.resize(cloud_doubles("latin-hypercube", params.count, box.dim()));
+  latin_hypercube_fill(params, box, seed, cloud.coords.data());
+  return cloud;
+}
+
+template <int D>
+PointSet<D> latin_hypercube(const LatinHypercubeParams& params, const Domain<D>& domain, std::uint64_t seed) {
+  if (params.count < 1 || params.count > (std::uint64_t{1} << 32))
+    throw InvalidArgument("latin-hypercube: count must be in [1, 2^32], got " + std::to_string(params.count));
+  PointSet<D> points(params.count);
+  latin_hypercube_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }
 
-template PointSet<2> latin_hypercube<2>(const LatinHypercubeParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> latin_hypercube<3>(const LatinHypercubeParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) \
+  template PointSet<D> latin_hypercube<D>(const LatinHypercubeParams&, const Domain<D>&, std::uint64_t);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include "pds/error.h"
 #include "pds/registry.h"
@@ -76,6 +78,42 @@ TEST(LatinHypercube, AxesAreIndependent) {
 TEST(LatinHypercube, RejectsZeroPoints) {
   EXPECT_THROW(latin_hypercube<2>({0}, Domain<2>::unit(), 0), InvalidArgument);
   EXPECT_THROW(generate("latin-hypercube", {.count = 0}), InvalidArgument);
+}
+
+
+TEST(LatinHypercube, EveryAxisOfARunTimeDimensionHoldsOnePointPerSlab) {
+  // In a box, 1,000 axes, N = 97: on every axis every slab holds one point.
+  CloudBox box = CloudBox::unit(1000);
+  for (int a = 0; a < 1000; ++a) {
+    box.lo[a] = -a;
+    box.hi[a] = 1.0 + 0.5 * a;
+  }
+  const std::uint64_t n = 97;
+  const PointCloud c = latin_hypercube({n}, box, 5);
+  ASSERT_EQ(c.size(), n);
+  std::vector<int> slab(n);
+  for (int a = 0; a < 1000; ++a) {
+    std::fill(slab.begin(), slab.end(), 0);
+    const double width = (box.hi[a] - box.lo[a]) / static_cast<double>(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = c.point(i)[a];
+      ASSERT_TRUE(x >= box.lo[a] && x < box.hi[a]) << "axis " << a;
+      ++slab[static_cast<std::size_t>(std::floor((x - box.lo[a]) / width))];
+    }
+    for (std::uint64_t k = 0; k < n; ++k) ASSERT_EQ(slab[k], 1) << "axis " << a << " slab " << k;
+  }
+  EXPECT_EQ(c, latin_hypercube({n}, box, 5));
+  EXPECT_NE(c, latin_hypercube({n}, box, 6));
+}
+
+TEST(LatinHypercube, TypedAndRunTimeDimensionsAreOneCodePath) {
+  const auto domain = Domain<6>::unit();
+  EXPECT_EQ(latin_hypercube({300}, CloudBox::of(domain), 8), PointCloud::from<6>(latin_hypercube<6>({300}, domain, 8)));
+  // Axes do not depend on how many follow.
+  const PointCloud wide = latin_hypercube({50}, CloudBox::unit(500), 8);
+  const auto narrow = latin_hypercube<3>({50}, Domain<3>::unit(), 8);
+  for (std::size_t i = 0; i < 50; ++i)
+    for (int a = 0; a < 3; ++a) ASSERT_EQ(wide.point(i)[a], narrow[i][a]);
 }
 
 }  // namespace

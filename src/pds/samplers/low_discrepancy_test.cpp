@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <set>
+#include <vector>
 
+#include "pds/error.h"
 #include "pds/samplers/halton.h"
 #include "pds/samplers/hammersley.h"
 #include "pds/samplers/latin_hypercube.h"
@@ -34,27 +36,73 @@ TEST(LowDiscrepancy, RadicalInverseMirrorsTheDigits) {
   EXPECT_LT(radical_inverse<3>(0xffffffffu), 1.0);
 }
 
+// The run-time odometer (fill_radical_inverses) against the compile-time
+// digit arithmetic, one index at a time, for every scrambling.
 template <unsigned B>
-void expect_walk_matches_direct(std::uint32_t first, int steps, std::uint64_t key) {
+double direct(std::uint32_t index, Scramble scramble, std::uint64_t key) {
+  const std::uint64_t r = reverse_digits<B>(index);
   const DigitPermutation<B> perm(key);
-  for (const DigitPermutation<B>* p : {static_cast<const DigitPermutation<B>*>(nullptr), &perm}) {
-    RadicalInverseWalk<B> walk(first, p);
+  switch (scramble) {
+    case Scramble::none:
+      return radical_inverse<B>(index);
+    case Scramble::permute_digits:
+      return digits_to_unit<B>(perm.apply(r), perm.tail());
+    case Scramble::owen:
+      return owen_scramble<B>(r, key);
+  }
+  return -1;
+}
+
+void expect_walk_matches_direct(std::uint32_t first, int steps, std::uint64_t seed) {
+  const BoxMap unit(CloudBox::unit(3));
+  for (Scramble s : {Scramble::none, Scramble::permute_digits, Scramble::owen}) {
+    std::vector<double> out(static_cast<std::size_t>(steps) * 3);
+    fill_radical_inverses(first, static_cast<std::uint64_t>(steps), 3, 0, s, RadicalRounding::correct, seed, 1, unit,
+                          out.data());
     for (int i = 0; i < steps; ++i) {
-      const std::uint64_t r = reverse_digits<B>(first + i);
-      const double direct = p ? digits_to_unit<B>(p->apply(r), p->tail()) : radical_inverse<B>(first + i);
-      ASSERT_EQ(walk.next(), direct) << "base " << B << " index " << first + i;
+      const auto index = static_cast<std::uint32_t>(first + i);
+      ASSERT_EQ(out[3 * i + 0], direct<2>(index, s, scramble_key(seed, 1, 0))) << "base 2 index " << index;
+      ASSERT_EQ(out[3 * i + 1], direct<3>(index, s, scramble_key(seed, 1, 1))) << "base 3 index " << index;
+      ASSERT_EQ(out[3 * i + 2], direct<5>(index, s, scramble_key(seed, 1, 2))) << "base 5 index " << index;
     }
   }
 }
 
 TEST(LowDiscrepancy, WalkMatchesDirectComputation) {
-  expect_walk_matches_direct<2>(0, 5000, 1);
-  expect_walk_matches_direct<3>(0, 5000, 2);
-  expect_walk_matches_direct<5>(0, 5000, 3);
+  expect_walk_matches_direct(0, 5000, 1);
   // Long carries, starts inside a block, up to the last index.
-  expect_walk_matches_direct<2>(0xffffffffu - 3000, 3001, 4);
-  expect_walk_matches_direct<3>(0xffffffffu - 3000, 3001, 5);
-  expect_walk_matches_direct<5>(0xffffffffu - 3000, 3001, 6);
+  expect_walk_matches_direct(0xffffffffu - 3000, 3001, 4);
+  expect_walk_matches_direct(1234567, 2000, 5);
+}
+
+TEST(LowDiscrepancy, PrimeBasesAreTheFirstPrimes) {
+  EXPECT_EQ(nth_prime(0), 2u);
+  EXPECT_EQ(nth_prime(7), 19u);
+  EXPECT_EQ(nth_prime(999), 7919u);
+  EXPECT_EQ(nth_prime(kRadixPrimes - 1), 104729u);
+  EXPECT_THROW(nth_prime(kRadixPrimes), InvalidArgument);
+}
+
+TEST(LowDiscrepancy, LargeBasesStayExactAndScrambledDigitsStayBalanced) {
+  // Axis 999 (base 7919), unscrambled and correctly rounded: i / 7919 for i < 7919.
+  const int dim = 1000;
+  const std::uint64_t n = 7919;
+  const BoxMap unit(CloudBox::unit(dim));
+  for (Scramble s : {Scramble::none, Scramble::permute_digits, Scramble::owen}) {
+    std::vector<double> out(n * dim);
+    fill_radical_inverses(0, n, dim, 0, s, RadicalRounding::correct, 3, 1, unit, out.data());
+    std::vector<int> slab(n, 0);
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const double x = out[i * dim + dim - 1];
+      if (s == Scramble::none) {
+        ASSERT_EQ(x, static_cast<double>(i) / 7919.0) << i;
+      }
+      ASSERT_TRUE(x >= 0.0 && x < 1.0);
+      ++slab[static_cast<std::size_t>(x * 7919.0 + 1e-9)];  // x * 7919 may round just below an integer
+    }
+    // Scrambled or not, the first 7919 points put one in each slab of width 1/7919.
+    for (std::uint64_t k = 0; k < n; ++k) ASSERT_EQ(slab[k], 1) << "scramble " << int(s) << " slab " << k;
+  }
 }
 
 template <unsigned B>

@@ -1,16 +1,40 @@
+// Uniform white noise: every coordinate an independent uniform draw from one
+// stream, point after point; one code path for every dimension.
 #include "pds/samplers/random.h"
 
 namespace pds {
 
+void white_noise_fill(const WhiteNoiseParams& params, const CloudBox& box, std::uint64_t seed, double* out) {
+  Rng rng(seed);
+  const auto n = static_cast<std::size_t>(box.dim());
+  for (std::uint64_t i = 0; i < params.count; ++i)
+    for (std::size_t a = 0; a < n; ++a) out[i * n + a] = rng.uniform(box.lo[a], box.hi[a]);
+}
+
+PointCloud white_noise(const WhiteNoiseParams& params, const CloudBox& box, std::uint64_t seed) {
+  PointCloud cloud{box.dim(), {}};
+  cloud.coords.resize(cloud_doubles("random", params.count, box.dim()));
+  white_noise_fill(params, box, seed, cloud.coords.data());
+  return cloud;
+}
+
 template <int D>
 PointSet<D> white_noise(const WhiteNoiseParams& params, const Domain<D>& domain, std::uint64_t seed) {
-  Rng rng(seed);
   PointSet<D> points(params.count);
-  for (auto& p : points) p = uniform_point(rng, domain);
+  white_noise_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }
 
-template PointSet<2> white_noise<2>(const WhiteNoiseParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> white_noise<3>(const WhiteNoiseParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) \
+  template PointSet<D> white_noise<D>(const WhiteNoiseParams&, const Domain<D>&, std::uint64_t);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

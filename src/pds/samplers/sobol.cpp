@@ -3,8 +3,11 @@
 // I. M. Sobol, On the distribution of points in a cube and the approximate
 // evaluation of integrals, USSR Comput. Math. Math. Phys. 7(4), 1967.
 // Direction numbers: S. Joe and F. Y. Kuo, Constructing Sobol sequences with
-// better two-dimensional projections, SIAM J. Sci. Comput. 30(5), 2008 (the
-// first rows of their new-joe-kuo-6.21201 table). Gray-code order: I. A.
+// better two-dimensional projections, SIAM J. Sci. Comput. 30(5), 2008: their
+// new-joe-kuo-6.21201 table (https://web.maths.unsw.edu.au/~fkuo/sobol/,
+// BSD-style licence), bit-packed in data/sobol/new-joe-kuo-6.21201.bin
+// (scripts/sobol_directions.py writes it) and embedded at build time
+// (cmake/embed_binary.cmake); decoded once, on first use. Gray-code order: I. A.
 // Antonov and V. M. Saleev, USSR Comput. Math. Math. Phys. 19(1), 1979.
 // Scrambling: A. B. Owen, Randomly permuted (t,m,s)-nets and (t,s)-sequences,
 // 1995.
@@ -15,47 +18,81 @@
 // direct computation of its first point.
 // Guarantees: see sobol.h; in 2D the sequence is a (0, 2)-sequence in base 2.
 // Complexity: O(count * D), about one XOR, one conversion and one multiply-add
-// a coordinate unscrambled; Owen scrambling walks all 32 bits (6 hashes).
-// Limits: indices below 2^32 (32-bit direction numbers); up to kSobolMaxDim axes.
+// a coordinate unscrambled (a transposed table of the axes' direction numbers
+// keeps the XOR of a step contiguous); Owen scrambling walks all 32 bits (6 hashes).
+// Limits: indices below 2^32 (32-bit direction numbers); up to 21,201 axes.
+// One code path for every dimension: the typed sobol<D> fills its points
+// through sobol_fill.
 // Why not GSL's gsl_qrng_sobol: it only steps forward from the start (no
 // random access to a range), has no scrambling, and costs a call per point;
 // the code here is a few lines. The tests compare the two point by point.
 
 #include "pds/samplers/sobol.h"
 
+#include <algorithm>
 #include <bit>
+#include <cstring>
+#include <vector>
 
 #include "pds/error.h"
 
 namespace pds {
+namespace detail {
+// Generated from data/sobol/new-joe-kuo-6.21201.bin (cmake/embed_binary.cmake).
+extern const unsigned char kSobolJoeKuoData[];
+extern const std::size_t kSobolJoeKuoDataSize;
+}  // namespace detail
+
 namespace {
 
-struct PrimitivePolynomial {
-  int degree;                            // s
-  unsigned interior;                     // a: the coefficients of x^(s-1) ... x^1, highest first
-  std::array<std::uint32_t, 5> initial;  // m_1 ... m_s
-};
-
-// Joe & Kuo, new-joe-kuo-6.21201, rows d = 2 ... 8 (axis 0 is van der Corput).
-constexpr std::array<PrimitivePolynomial, kSobolMaxDim - 1> kJoeKuo{{
-    {1, 0, {1}},
-    {2, 1, {1, 3}},
-    {3, 1, {1, 3, 1}},
-    {3, 2, {1, 1, 1}},
-    {4, 1, {1, 1, 3, 3}},
-    {4, 4, {1, 3, 5, 13}},
-    {5, 2, {1, 1, 5, 5, 17}},
-}};
-
-struct DirectionTable {
-  std::array<std::array<std::uint32_t, 32>, kSobolMaxDim> v;
-  DirectionTable() {
-    for (int axis = 0; axis < kSobolMaxDim; ++axis) v[axis] = sobol_directions(axis);
+/// Reads the table's bit stream, least significant bit first.
+class BitReader {
+ public:
+  BitReader(const unsigned char* data, std::size_t size) : data_(data), size_(size) {}
+  std::uint32_t take(int width) {
+    std::uint32_t v = 0;
+    for (int k = 0; k < width; ++k, ++bit_) {
+      if (bit_ / 8 >= size_) throw Failure("sobol: the embedded direction numbers are truncated");
+      v |= static_cast<std::uint32_t>((data_[bit_ / 8] >> (bit_ % 8)) & 1u) << k;
+    }
+    return v;
   }
+
+ private:
+  const unsigned char* data_;
+  std::size_t size_;
+  std::size_t bit_ = 0;
 };
 
-const DirectionTable& directions() {
-  static const DirectionTable table;
+/// Direction numbers of every axis, v[axis][k], decoded once.
+const std::vector<std::array<std::uint32_t, 32>>& directions() {
+  static const std::vector<std::array<std::uint32_t, 32>> table = [] {
+    const unsigned char* data = detail::kSobolJoeKuoData;
+    const std::size_t size = detail::kSobolJoeKuoDataSize;
+    std::uint32_t rows = 0;
+    if (size < 8 || std::memcmp(data, "JK6", 4) != 0) throw Failure("sobol: the embedded direction numbers are corrupt");
+    for (int b = 0; b < 4; ++b) rows |= static_cast<std::uint32_t>(data[4 + b]) << (8 * b);
+    if (rows + 1 != static_cast<std::uint32_t>(kSobolMaxDim))
+      throw Failure("sobol: the embedded table has " + std::to_string(rows) + " rows, expected " +
+                  std::to_string(kSobolMaxDim - 1));
+    std::vector<std::array<std::uint32_t, 32>> v(kSobolMaxDim);
+    for (int k = 0; k < 32; ++k) v[0][k] = std::uint32_t{1} << (31 - k);  // axis 0: van der Corput
+    BitReader in(data + 8, size - 8);
+    for (int axis = 1; axis < kSobolMaxDim; ++axis) {
+      const int s = static_cast<int>(in.take(5));
+      if (s < 1 || s > 31) throw Failure("sobol: the embedded direction numbers are corrupt");
+      const std::uint32_t a = in.take(s - 1);  // the coefficients of x^(s-1) ... x^1, highest first
+      auto& d = v[axis];
+      for (int k = 0; k < s; ++k) d[k] = (2 * in.take(k) + 1) << (31 - k);  // m_(k+1), odd, below 2^(k+1)
+      // Bratley & Fox's recurrence on left-aligned direction numbers.
+      for (int k = s; k < 32; ++k) {
+        d[k] = d[k - s] ^ (d[k - s] >> s);
+        for (int l = 1; l < s; ++l)
+          if ((a >> (s - 1 - l)) & 1) d[k] ^= d[k - l];
+      }
+    }
+    return v;
+  }();
   return table;
 }
 
@@ -65,83 +102,142 @@ std::array<std::uint32_t, 32> sobol_directions(int axis) {
   if (axis < 0 || axis >= kSobolMaxDim)
     throw InvalidArgument("sobol: axis " + std::to_string(axis) + " is beyond the " + std::to_string(kSobolMaxDim) +
                           " embedded axes");
-  std::array<std::uint32_t, 32> v{};
-  if (axis == 0) {
-    for (int k = 0; k < 32; ++k) v[k] = std::uint32_t{1} << (31 - k);
-    return v;
+  return directions()[static_cast<std::size_t>(axis)];
+}
+
+namespace {
+
+/// The walk through a range of the sequence: set up once (the first point
+/// from its Gray code, the scrambling of every axis), then points block after
+/// block, so that a caller can stage them in a small buffer.
+class SobolWalk {
+ public:
+  SobolWalk(const SobolParams& params, const CloudBox& box, std::uint64_t seed)
+      : n_(static_cast<std::size_t>(box.dim())), scramble_(params.scramble), index_(params.first), map_(box) {
+    const int dim = box.dim();
+    if (dim < 1 || dim > kSobolMaxDim)
+      throw InvalidArgument("sobol: dimension " + std::to_string(dim) + " is not supported (supported: 1 to " +
+                            std::to_string(kSobolMaxDim) + ", Joe & Kuo's direction numbers)");
+    require_index_range("sobol", params.first, params.count);
+    const auto& v = directions();
+    // Step k's direction numbers of every axis side by side: vt[k * dim + a].
+    vt_.resize(32 * n_);
+    for (std::size_t a = 0; a < n_; ++a)
+      for (int k = 0; k < 32; ++k) vt_[static_cast<std::size_t>(k) * n_ + a] = v[a][k];
+    // The first point directly from its Gray code, the others by one XOR each.
+    x_.assign(n_, 0);
+    const auto first = static_cast<std::uint32_t>(params.first);
+    const std::uint32_t gray = first ^ (first >> 1);
+    for (int k = 0; k < 32; ++k)
+      if ((gray >> k) & 1)
+        for (std::size_t a = 0; a < n_; ++a) x_[a] ^= vt_[static_cast<std::size_t>(k) * n_ + a];
+    if (scramble_ != Scramble::none) {
+      key_.resize(n_);
+      shift_.resize(n_);
+      tail_.resize(n_);
+      for (std::size_t a = 0; a < n_; ++a) {
+        key_[a] = scramble_key(seed, 3, static_cast<int>(a));
+        const DigitPermutation<2> perm(key_[a]);
+        shift_[a] = perm.apply(0);  // the XOR mask of a base-2 digit permutation
+        tail_[a] = perm.tail();
+      }
+    }
   }
-  const PrimitivePolynomial& p = kJoeKuo[axis - 1];
-  const int s = p.degree;
-  for (int k = 0; k < s; ++k) v[k] = p.initial[k] << (31 - k);
-  // Bratley & Fox's recurrence on left-aligned direction numbers.
-  for (int k = s; k < 32; ++k) {
-    v[k] = v[k - s] ^ (v[k - s] >> s);
-    for (int l = 1; l < s; ++l)
-      if ((p.interior >> (s - 1 - l)) & 1) v[k] ^= v[k - l];
+
+  /// The next `count` points into out (count * dim doubles).
+  void fill(std::uint64_t count, double* out) {
+    switch (scramble_) {
+      case Scramble::none:
+        walk<Scramble::none>(count, out);
+        break;
+      case Scramble::permute_digits:
+        walk<Scramble::permute_digits>(count, out);
+        break;
+      case Scramble::owen:
+        walk<Scramble::owen>(count, out);
+        break;
+    }
   }
-  return v;
+
+ private:
+  // One loop per scrambling, so that the choice is not re-made per coordinate.
+  template <Scramble scramble>
+  void walk(std::uint64_t count, double* out) {
+    const std::size_t n = n_;
+    const double* __restrict lo = map_.lo();
+    const double* __restrict extent = map_.extent();
+    const double* __restrict top = map_.top();
+    std::uint32_t* __restrict xs = x_.data();
+    for (std::uint64_t i = 0; i < count; ++i, ++index_) {
+      double* __restrict p = out + i * n;
+      for (std::size_t a = 0; a < n; ++a) {
+        double u;
+        if constexpr (scramble == Scramble::none)
+          u = xs[a] * 0x1.0p-32;
+        else if constexpr (scramble == Scramble::permute_digits)
+          u = digits_to_unit<2>(xs[a] ^ shift_[a], tail_[a]);
+        else
+          u = owen_scramble<2>(xs[a], key_[a]);
+        p[a] = std::min(lo[a] + u * extent[a], top[a]);
+      }
+      const int bit = std::countr_zero(static_cast<std::uint32_t>(index_ + 1));  // 32 after the last index
+      if (bit < 32) {
+        const std::uint32_t* __restrict step = vt_.data() + static_cast<std::size_t>(bit) * n;
+        for (std::size_t a = 0; a < n; ++a) xs[a] ^= step[a];
+      }
+    }
+  }
+
+  std::size_t n_;
+  Scramble scramble_;
+  std::uint64_t index_;
+  BoxMap map_;
+  std::vector<std::uint32_t> vt_, x_;
+  std::vector<std::uint64_t> key_, shift_;
+  std::vector<double> tail_;
+};
+
+}  // namespace
+
+void sobol_fill(const SobolParams& params, const CloudBox& box, std::uint64_t seed, double* out) {
+  SobolWalk(params, box, seed).fill(params.count, out);
+}
+
+PointCloud sobol(const SobolParams& params, const CloudBox& box, std::uint64_t seed) {
+  PointCloud cloud{box.dim(), {}};
+  const std::size_t total = cloud_doubles("sobol", params.count, box.dim());
+  SobolWalk walk(params, box, seed);
+  // Staged through a buffer of about 256 KB and appended: the set's memory
+  // is written once, not zeroed first (as resize would) and then written.
+  const std::uint64_t block = std::max<std::uint64_t>(1, 32768 / static_cast<std::uint64_t>(box.dim()));
+  std::vector<double> stage(static_cast<std::size_t>(std::min(block, params.count)) * static_cast<std::size_t>(box.dim()));
+  cloud.coords.reserve(total);
+  for (std::uint64_t done = 0; done < params.count;) {
+    const std::uint64_t now = std::min(block, params.count - done);
+    walk.fill(now, stage.data());
+    cloud.coords.insert(cloud.coords.end(), stage.begin(), stage.begin() + static_cast<std::ptrdiff_t>(now * box.dim()));
+    done += now;
+  }
+  return cloud;
 }
 
 template <int D>
 PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint64_t seed) {
-  static_assert(D <= kSobolMaxDim);
   require_index_range("sobol", params.first, params.count);
-  const auto& v = directions().v;
-
-  // The first point directly from its Gray code, the others by one XOR each.
-  std::array<std::uint32_t, D> x{};
-  const auto first = static_cast<std::uint32_t>(params.first);
-  const std::uint32_t gray = first ^ (first >> 1);
-  for (int a = 0; a < D; ++a)
-    for (int k = 0; k < 32; ++k)
-      if ((gray >> k) & 1) x[a] ^= v[a][k];
-
-  std::array<std::uint64_t, D> key{};
-  std::array<std::uint64_t, D> shift{};
-  std::array<double, D> tail{};
-  for (int a = 0; a < D; ++a) {
-    key[a] = scramble_key(seed, 3, a);
-    const DigitPermutation<2> perm(key[a]);
-    shift[a] = perm.apply(0);  // the XOR mask of a base-2 digit permutation
-    tail[a] = perm.tail();
-  }
-
-  const UnitCubeMap<D> to_domain(domain);
   PointSet<D> points(params.count);
-  // One loop per scrambling, so that the choice is not re-made per coordinate.
-  auto walk = [&](auto mode) {
-    constexpr Scramble scramble = decltype(mode)::value;
-    for (std::uint64_t i = 0; i < params.count; ++i) {
-      for (int a = 0; a < D; ++a) {
-        double u;
-        if constexpr (scramble == Scramble::none)
-          u = x[a] * 0x1.0p-32;
-        else if constexpr (scramble == Scramble::permute_digits)
-          u = digits_to_unit<2>(x[a] ^ shift[a], tail[a]);
-        else
-          u = owen_scramble<2>(x[a], key[a]);
-        points[i][a] = to_domain(a, u);
-      }
-      const int bit = std::countr_zero(static_cast<std::uint32_t>(first + i + 1));  // 32 after the last index
-      if (bit < 32)
-        for (int a = 0; a < D; ++a) x[a] ^= v[a][bit];
-    }
-  };
-  switch (params.scramble) {
-    case Scramble::none:
-      walk(std::integral_constant<Scramble, Scramble::none>{});
-      break;
-    case Scramble::permute_digits:
-      walk(std::integral_constant<Scramble, Scramble::permute_digits>{});
-      break;
-    case Scramble::owen:
-      walk(std::integral_constant<Scramble, Scramble::owen>{});
-      break;
-  }
+  sobol_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }
 
-template PointSet<2> sobol<2>(const SobolParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> sobol<3>(const SobolParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) template PointSet<D> sobol<D>(const SobolParams&, const Domain<D>&, std::uint64_t);
+PDS_INSTANTIATE(1)
+PDS_INSTANTIATE(2)
+PDS_INSTANTIATE(3)
+PDS_INSTANTIATE(4)
+PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

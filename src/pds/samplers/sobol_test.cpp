@@ -5,9 +5,11 @@
 
 #include <cstring>
 #include <memory>
+#include <vector>
 
 #include "pds/error.h"
 #include "pds/registry.h"
+#include "scipy_reference.h"
 #include "stratification.h"
 
 namespace pds {
@@ -146,6 +148,110 @@ TEST(Sobol, RejectsIndicesPastTwoToThe32) {
   EXPECT_THROW(generate("sobol", {.count = 10, .params = {{"first", 4294967290.0}}}), InvalidArgument);
   EXPECT_THROW(generate("sobol", {.count = 10, .params = {{"scramble", 3}}}), InvalidArgument);
   EXPECT_EQ(generate("sobol", {.count = 10, .params = {{"first", 4294967286.0}}}).size(), 10u);
+}
+
+
+TEST(Sobol, EqualsScipyInEveryDimension) {
+  // scipy.stats.qmc.Sobol(d, scramble=False).random(64), computed once
+  // (tests/data/scipy_sobol.txt): our index i is SciPy's row i, both start at
+  // the origin, and every double is equal.
+  const auto blocks = test::read_scipy_blocks("scipy_sobol.txt");
+  ASSERT_EQ(blocks.size(), 7u) << "tests/data/scipy_sobol.txt";
+  for (const auto& b : blocks) {
+    const PointCloud ours = sobol({b.count}, CloudBox::unit(b.dim), 0);
+    ASSERT_EQ(ours.size(), b.count);
+    EXPECT_EQ(test::scipy_checksum(ours.coords), b.checksum) << "d = " << b.dim;
+    for (std::size_t i = 0; i < b.count; ++i)
+      for (std::size_t j = 0; j < b.columns.size(); ++j)
+        ASSERT_EQ(ours.point(i)[b.columns[j]], b.rows[i][j]) << "d = " << b.dim << " point " << i << " axis "
+                                                              << b.columns[j];
+    // The registry gives the same points.
+    EXPECT_EQ(generate("sobol", {.dim = b.dim, .count = b.count}), ours) << "d = " << b.dim;
+  }
+}
+
+TEST(Sobol, TypedAndRunTimeDimensionsAreOneCodePath) {
+  const auto domain = Domain<5>::box({{-1, 0, 2, 0, 0}}, {{1, 1e-3, 3, 5, 1}});
+  for (Scramble s : kAllScrambles) {
+    const auto typed = sobol<5>({700, 3, s}, domain, 4);
+    EXPECT_EQ(sobol({700, 3, s}, CloudBox::of(domain), 4), PointCloud::from<5>(typed)) << "scramble " << int(s);
+    // Axes do not depend on how many follow: dimension 1000's first 5 columns are dimension 5's.
+    const PointCloud wide = sobol({64, 0, s}, CloudBox::unit(1000), 4);
+    const auto narrow = sobol<5>({64, 0, s}, Domain<5>::unit(), 4);
+    for (std::size_t i = 0; i < 64; ++i)
+      for (int a = 0; a < 5; ++a) ASSERT_EQ(wide.point(i)[a], narrow[i][a]) << "scramble " << int(s);
+  }
+}
+
+TEST(Sobol, EveryAxisOfEveryDimensionIsBalanced) {
+  // Each axis alone is van der Corput's sequence permuted within its aligned
+  // blocks: 2^m points put one in each interval of width 2^-m, in all 21,201
+  // axes, scrambled or not.
+  constexpr int m = 8;
+  for (Scramble s : kAllScrambles) {
+    const PointCloud cloud = sobol({1u << m, 0, s}, CloudBox::unit(kSobolMaxDim), 6);
+    std::vector<unsigned char> seen(1u << m);
+    for (int a = 0; a < kSobolMaxDim; ++a) {
+      std::fill(seen.begin(), seen.end(), 0);
+      for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const auto k = static_cast<std::size_t>(cloud.point(i)[a] * (1u << m));
+        ASSERT_FALSE(seen[k]++) << "scramble " << int(s) << " axis " << a << " interval " << k;
+      }
+    }
+  }
+}
+
+TEST(Sobol, ScrambledPairsKeepTheirNetQuality) {
+  // For pairs of far axes, the least t for which 2^10 unscrambled points form
+  // a (t, 10, 2)-net; digit permutation and Owen scrambling keep it.
+  constexpr int m = 10;
+  const std::pair<int, int> pairs[] = {{0, 1}, {3, 17}, {99, 100}, {998, 999}, {4000, 21200}};
+  auto columns = [](const PointCloud& c, int a, int b) {
+    PointSet<2> p(c.size());
+    for (std::size_t i = 0; i < c.size(); ++i) p[i] = {{c.point(i)[a], c.point(i)[b]}};
+    return p;
+  };
+  const PointCloud plain = sobol({1u << m}, CloudBox::unit(kSobolMaxDim), 0);
+  for (Scramble s : {Scramble::permute_digits, Scramble::owen})
+    for (std::uint64_t seed : {1u, 2u}) {
+      const PointCloud scrambled = sobol({1u << m, 0, s}, CloudBox::unit(kSobolMaxDim), seed);
+      for (auto [a, b] : pairs) {
+        int t = 0;
+        while (test::net_error(columns(plain, a, b), m, t) != "") ++t;
+        EXPECT_LE(t, m);
+        EXPECT_EQ(test::net_error(columns(scrambled, a, b), m, t), "")
+            << "axes " << a << ", " << b << " scramble " << int(s) << " seed " << seed << " t " << t;
+      }
+    }
+}
+
+TEST(Sobol, ScrambledHighDimensionsAreSeededAndDeterministic) {
+  for (Scramble s : {Scramble::permute_digits, Scramble::owen}) {
+    const auto a = sobol({100, 0, s}, CloudBox::unit(1000), 9);
+    EXPECT_EQ(a, sobol({100, 0, s}, CloudBox::unit(1000), 9));
+    const auto b = sobol({100, 0, s}, CloudBox::unit(1000), 10);
+    EXPECT_NE(a, b);
+    // Every axis gets its own scrambling: no two columns equal.
+    for (int axis = 1; axis < 1000; ++axis) ASSERT_NE(a.point(1)[axis], a.point(1)[axis - 1]) << "axis " << axis;
+  }
+}
+
+TEST(Sobol, DimensionsPastTheTableAndBudgetsAreRefused) {
+  EXPECT_THROW(sobol({4}, CloudBox::unit(kSobolMaxDim + 1), 0), InvalidArgument);
+  EXPECT_THROW(sobol({4}, CloudBox::unit(0), 0), InvalidArgument);
+  try {
+    generate("sobol", {.dim = kSobolMaxDim + 1, .count = 4});
+    ADD_FAILURE() << "no error past 21201 dimensions";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("1-21201"), std::string::npos) << e.what();
+  }
+  // 10^8 points (the default cap) of 21,201 doubles: refused before allocation.
+  try {
+    generate("sobol", {.dim = kSobolMaxDim, .count = 100'000'000});
+    ADD_FAILURE() << "no error for 2 x 10^12 doubles";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("GiB"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
