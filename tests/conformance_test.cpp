@@ -10,6 +10,7 @@
 
 #include "pds/analysis/distance.h"
 #include "pds/analysis/maximality.h"
+#include "pds/analysis/relative_radius.h"
 #include "pds/registry.h"
 
 namespace pds {
@@ -63,7 +64,10 @@ class Conformance : public ::testing::TestWithParam<Case> {
     r.hi.assign(c.dim, 0.5);
     if (!find_method(c.method).square_torus_only) r.hi[0] = 1.5;
     if (c.by_radius) {
-      r.radius = c.dim == 2 ? 0.04 : 0.15;
+      // About 300 points past 3D (the plane and space keep their radii):
+      // the radius at which 300 points have relative radius 0.7.
+      const double volume = find_method(c.method).square_torus_only ? 1.0 : 2.0;
+      r.radius = c.dim == 2 ? 0.04 : c.dim == 3 ? 0.15 : 1.4 * max_packing_radius(volume, 300, c.dim);
     } else {
       r.count = c.dim == 2 ? 800 : 512;
     }
@@ -158,7 +162,7 @@ TEST_P(RadiusConformance, RadiusHoldsBetweenEveryPairAndMaximalityWhereClaimed) 
   const Method& m = find_method(GetParam().method);
   const GenerateRequest r = request(3);
   const PointCloud cloud = generate(m.name, r);
-  visit_dim(r.dim, [&](auto d) {
+  visit_dim<kMinDim, kMaxDim>(r.dim, [&](auto d) {
     constexpr int D = decltype(d)::value;
     const Domain<D> domain = r.domain<D>();
     const auto points = cloud.as<D>();
