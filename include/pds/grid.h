@@ -201,6 +201,11 @@ class Grid {
         if (gap * gap > r2) continue;
         axis_cells[a][counts[a]++] = {static_cast<std::size_t>(cell) * hood_.stride(a), gap * gap};
       }
+      // Nearest first along every axis, so the walk starts at p's own cell
+      // (a conflict query usually stops there).
+      // (A stable sort: ties keep the block's order on every platform.)
+      std::stable_sort(axis_cells[a].begin(), axis_cells[a].begin() + counts[a],
+                       [](const Candidate& x, const Candidate& y) { return x.gap2 < y.gap2; });
     }
     return walk<0>(axis_cells, counts, 0, 0.0, r2, f);
   }
