@@ -203,9 +203,11 @@ class Grid {
       }
       // Nearest first along every axis, so the walk starts at p's own cell
       // (a conflict query usually stops there).
-      // (A stable sort: ties keep the block's order on every platform.)
-      std::stable_sort(axis_cells[a].begin(), axis_cells[a].begin() + counts[a],
-                       [](const Candidate& x, const Candidate& y) { return x.gap2 < y.gap2; });
+      // An insertion sort (a few cells; std::stable_sort allocates): stable,
+      // so ties keep the block's order on every platform.
+      for (int i = 1; i < counts[a]; ++i)
+        for (int j = i; j > 0 && axis_cells[a][j].gap2 < axis_cells[a][j - 1].gap2; --j)
+          std::swap(axis_cells[a][j], axis_cells[a][j - 1]);
     }
     return walk<0>(axis_cells, counts, 0, 0.0, r2, f);
   }

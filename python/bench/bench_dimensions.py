@@ -4,7 +4,7 @@ dimension-generic method, and SciPy's qmc.PoissonDisk in the same run
 
     PYTHONPATH=build/python /usr/bin/python3 python/bench/bench_dimensions.py [--n N] [--scipy-n M]
 
-For each method and dimension: the unit torus at the radius where N points
+For each method and dimension: the unit cube (--torus: the unit torus) at the radius where N points
 would have relative radius 0.75 (pds.generate sizes radius-only methods so
 from a count), one run, wall clock of pds.generate; rho from the set's own
 minimum distance. SciPy: PoissonDisk(d, radius=r, seed=1).fill_space() at the
@@ -49,8 +49,10 @@ def main():
     ap.add_argument("--dims", default="1,2,3,4,5,6,7,8")
     ap.add_argument("--methods", default="bridson,dart-throwing,ebeida,wei,best-candidate")
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--torus", action="store_true", help="pds on the unit torus (SciPy stays in the box)")
     args = ap.parse_args()
-    print(f"# {platform.node()} {platform.processor() or platform.machine()}, threads {args.threads}")
+    where = "torus" if args.torus else "box"
+    print(f"# {platform.node()} {platform.processor() or platform.machine()}, threads {args.threads}, pds in the {where}")
     print("| method | D | points | seconds | samples/s | rho |")
     print("|---|---|---|---|---|---|")
     rates = {}
@@ -65,10 +67,10 @@ def main():
                 n = min(n, 20_000)
             r = radius_for(n, d)
             start = time.perf_counter()
-            x = pds.generate(m, radius=r, dim=d, torus=True, seed=1, threads=args.threads)
+            x = pds.generate(m, radius=r, dim=d, torus=args.torus, seed=1, threads=args.threads)
             t = time.perf_counter() - start
             rates[(m, d)] = len(x) / t
-            print(f"| {m} | {d} | {len(x)} | {t:.3f} | {len(x) / t:,.0f} | {rho(x, True, d):.3f} |", flush=True)
+            print(f"| {m} | {d} | {len(x)} | {t:.3f} | {len(x) / t:,.0f} | {rho(x, args.torus, d):.3f} |", flush=True)
         if d >= 2:
             r = radius_for(args.scipy_n, d)
             start = time.perf_counter()
