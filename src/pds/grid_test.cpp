@@ -15,12 +15,15 @@ namespace {
 // near the faces and corners, on boxes and tori, with radii around and above
 // the cell size.
 template <int D>
-void check_against_brute_force(const Domain<D>& domain, double grid_radius, std::uint64_t seed) {
+void check_against_brute_force(const Domain<D>& domain, double grid_radius, std::uint64_t seed,
+                               bool conflicts = false) {
   const PointSet<D> points = white_noise<D>({400}, domain, seed);
-  Grid<D> grid = Grid<D>::for_radius(domain, grid_radius);
+  Grid<D> grid = conflicts ? Grid<D>::for_conflicts(domain, grid_radius) : Grid<D>::for_radius(domain, grid_radius);
   for (const auto& p : points) grid.insert(p);
   ASSERT_EQ(grid.size(), points.size());
-  for (int i = 0; i < D; ++i) EXPECT_LE(grid.cell_edge(i), grid_radius / std::sqrt(double(D)) * (1 + 1e-12));
+  if (!conflicts) {
+    for (int i = 0; i < D; ++i) EXPECT_LE(grid.cell_edge(i), grid_radius / std::sqrt(double(D)) * (1 + 1e-12));
+  }
 
   Rng rng(seed + 1);
   for (int q = 0; q < 200; ++q) {
@@ -54,6 +57,31 @@ TEST(Grid, MatchesBruteForceOnBoxAndTorus3D) {
   check_against_brute_force<3>(Domain<3>::unit(false), 0.15, 4);
   check_against_brute_force<3>(Domain<3>::unit(true), 0.15, 5);
   check_against_brute_force<3>(Domain<3>::box({0, 0, 0}, {2, 1, 0.5}), 0.2, 6);
+}
+
+// From 4D the walk over neighbouring cells is pruned by the gap to the query
+// (and sorted nearest first); for_conflicts' cells have edge r. Tori whose
+// periods hold 1, 2 or 3 cells make the images of one cell meet.
+template <int D>
+void check_high_dimension(std::uint64_t seed) {
+  Point<D> lo, hi;
+  for (int a = 0; a < D; ++a) {
+    lo[a] = -0.5 * a;
+    hi[a] = lo[a] + (a == 0 ? 1.0 : a == 1 ? 0.25 : a == 2 ? 0.45 : 0.7);
+  }
+  for (bool torus : {false, true}) {
+    const Domain<D> domain{lo, hi, torus};
+    check_against_brute_force<D>(domain, 0.21, seed, true);  // for_conflicts: pruned walk
+    // Finer cells: the pruned walk, or the plain window past 8 cells an axis.
+    if (D == 4) check_against_brute_force<D>(domain, 0.21, seed, false);
+  }
+}
+
+TEST(Grid, MatchesBruteForceFrom4To8Dimensions) {
+  check_high_dimension<4>(11);
+  check_high_dimension<5>(12);
+  check_high_dimension<6>(13);
+  check_high_dimension<8>(14);
 }
 
 TEST(Grid, CellsDivideTheTorusPeriodExactly) {
