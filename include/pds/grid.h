@@ -16,6 +16,7 @@
 #include <limits>
 #include <string>
 
+#include "pds/detail/format.h"
 #include "pds/domain.h"
 #include "pds/error.h"
 #include "pds/grid_neighbourhood.h"
@@ -34,14 +35,14 @@ class Grid {
   /// than `max_cells` cells would be needed.
   Grid(const Domain<D>& domain, double max_cell_edge, std::size_t max_cells = kMaxGridCells) : domain_(domain) {
     if (!(max_cell_edge > 0.0) || !std::isfinite(max_cell_edge))
-      throw InvalidArgument("grid: cell edge must be positive and finite, got " + std::to_string(max_cell_edge));
+      throw InvalidArgument("grid: cell edge must be positive and finite, got " + detail::format_number(max_cell_edge));
     double total = 1.0;
     std::array<int, D> cells;
     for (int i = 0; i < D; ++i) {
       const double n = std::max(1.0, std::ceil(domain.extent(i) / max_cell_edge));
       total *= n;
       if (total > static_cast<double>(max_cells))
-        throw InvalidArgument("grid: cell edge " + std::to_string(max_cell_edge) +
+        throw InvalidArgument("grid: cell edge " + detail::format_number(max_cell_edge) +
                               " is too small for the domain: the neighbour grid would need more than " +
                               std::to_string(max_cells) + " cells");
       cells[i] = static_cast<int>(n);

@@ -4,6 +4,7 @@
 // pixel), so a pixel's samples do not depend on which rectangle asked for them
 // or on the order of the queries. Tiled samplers delegate to TiledPattern.
 
+#include "pds/detail/format.h"
 #include "pds/render/image_sampler.h"
 
 #include <algorithm>
@@ -51,7 +52,7 @@ void for_each_pixel(const PixelRect& r, F&& f) {
 void check_rect(const PixelRect& r) {
   for (double v : {r.x0, r.y0, r.x1, r.y1})
     if (!std::isfinite(v) || std::abs(v) > 1e15)
-      throw InvalidArgument("image sampler: rectangle coordinate " + std::to_string(v) + " is not a usable pixel");
+      throw InvalidArgument("image sampler: rectangle coordinate " + detail::format_number(v) + " is not a usable pixel");
 }
 
 // The homogeneous Poisson process of intensity spp: restricted to one pixel it

@@ -5,6 +5,7 @@
 // splats each sample into at most (2R + 1)^2 pixels with separable weights,
 // so the filter is evaluated 2 (2R + 1) times a sample, not (2R + 1)^2.
 
+#include "pds/detail/format.h"
 #include "pds/render/render.h"
 
 #include <fftw3.h>
@@ -241,7 +242,7 @@ struct LatticePower {
 // Power on and off the lattice of multiples of 1 / period cycles per pixel.
 LatticePower lattice_power(const Image& spectrum, double period) {
   if (!(period > 0) || !std::isfinite(period))
-    throw InvalidArgument("tile lattice: period must be positive, got " + std::to_string(period));
+    throw InvalidArgument("tile lattice: period must be positive, got " + detail::format_number(period));
   // A bin is on the lattice when its frequency is within half a bin of a multiple of 1 / period.
   auto on_lattice = [&](int index, int size) {
     const double cycles = frequency(index, size) * period;

@@ -35,6 +35,7 @@
 // O(N log N). Memory: the triangulation (about 150 bytes a sample; 9 copies per
 // sample on an oblong torus).
 // Limits: 2D only.
+#include "pds/detail/format.h"
 #include "pds/samplers/jones.h"
 
 #include <CGAL/Delaunay_triangulation_2.h>
@@ -265,7 +266,7 @@ class JonesSampler {
       if (!dart) {
         if (++misses_[k] > kMaxMisses)
           throw Failure("jones: " + std::to_string(kMaxMisses) + " darts in a row missed the free area of cell " +
-                        std::to_string(k) + " (radius " + std::to_string(radius_) + ")");
+                        std::to_string(k) + " (radius " + detail::format_number(radius_) + ")");
         continue;
       }
       insert(*dart, static_cast<std::int32_t>(k));
@@ -466,8 +467,8 @@ PointSet<2> jones(const JonesParams& params, const Domain<2>& domain, std::uint6
     for (int i = 0; i < 2; ++i)
       if (domain.extent(i) < 4.0 * params.radius)
         throw InvalidArgument("jones: on a torus every period must be at least 4 radius; axis " + std::to_string(i) +
-                              " has " + std::to_string(domain.extent(i)) + " for radius " +
-                              std::to_string(params.radius));
+                              " has " + detail::format_number(domain.extent(i)) + " for radius " +
+                              detail::format_number(params.radius));
   if (domain.periodic && domain.extent(0) == domain.extent(1))
     return JonesSampler<TorusCells>(params, domain, seed).run();
   return JonesSampler<PlaneCells>(params, domain, seed).run();

@@ -1,3 +1,4 @@
+#include "pds/detail/format.h"
 #include "pds/samplers/strata.h"
 
 #include <algorithm>
@@ -97,7 +98,7 @@ std::array<int, D> strata_for_spacing(const Domain<D>& domain, double spacing) {
   for (int i = 0; i < D; ++i) {
     const double n = std::floor(domain.extent(i) / spacing);
     if (n > static_cast<double>(std::numeric_limits<int>::max()))
-      throw InvalidArgument("spacing " + std::to_string(spacing) + " is too small for the domain");
+      throw InvalidArgument("spacing " + detail::format_number(spacing) + " is too small for the domain");
     cells[i] = std::max(1, static_cast<int>(n));
     // Rounding can put two centres a hair closer than extent / n: drop cells
     // until every computed gap holds.

@@ -61,6 +61,7 @@
 // bytes each at level 1 in 2D, about 2 per sample), and during a level's
 // passes one 4-byte entry per dart (about one per empty cell), freed before
 // the next level: at N = 10^6 in 2D a peak of 2.8 times the output (docs/wei.md).
+#include "pds/detail/format.h"
 #include "pds/samplers/wei.h"
 
 
@@ -188,7 +189,7 @@ class WeiSampler {
       full_[i] = full;
     }
     if (total > static_cast<double>(std::numeric_limits<std::uint32_t>::max() / 2))
-      throw InvalidArgument("wei: radius " + std::to_string(r) +
+      throw InvalidArgument("wei: radius " + detail::format_number(r) +
                             " is too small for the domain (grid above 2^31 cells)");
     hood_ = GridNeighbourhood<D>(domain, n_);
     std::size_t stride = 1;

@@ -17,6 +17,7 @@
 // both maximum-sum windows over the run's sorted y values, found in O(run) with
 // a monotone deque; runs grow one point at a time by sorted insertion.
 
+#include "pds/detail/format.h"
 #include "pds/tiling/tiled_pattern.h"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ TiledPattern::TiledPattern(PointSet<2> tile, double spp, TiledPatternOptions opt
     for (int k = 0; k < 2; ++k)
       if (!(tile[i][k] >= 0.0 && tile[i][k] < 1.0))
         throw InvalidArgument("tiled pattern: tile point " + std::to_string(i) + " has coordinate " +
-                              std::to_string(tile[i][k]) + " outside [0, 1) (the tile must lie on the unit torus)");
+                              detail::format_number(tile[i][k]) + " outside [0, 1) (the tile must lie on the unit torus)");
   const std::size_t m = tile.size();
   spp_ = spp;
   tile_size_ = std::sqrt(static_cast<double>(m) / spp);
@@ -83,8 +84,8 @@ void TiledPattern::check(const PixelRect& r) const {
   const double limit = kMaxTileIndex * tile_size_;
   for (double v : {r.x0, r.y0, r.x1, r.y1})
     if (!std::isfinite(v) || std::abs(v) > limit)
-      throw InvalidArgument("tiled pattern: rectangle coordinate " + std::to_string(v) +
-                            " is not finite or lies beyond " + std::to_string(limit) + " pixels");
+      throw InvalidArgument("tiled pattern: rectangle coordinate " + detail::format_number(v) +
+                            " is not finite or lies beyond " + detail::format_number(limit) + " pixels");
 }
 
 void TiledPattern::samples_in(const PixelRect& rect, std::vector<Point<2>>& positions,
