@@ -61,7 +61,6 @@
 // bytes each at level 1 in 2D, about 2 per sample), and during a level's
 // passes one 4-byte entry per dart (about one per empty cell), freed before
 // the next level: at N = 10^6 in 2D a peak of 2.8 times the output (docs/wei.md).
-#include "pds/detail/format.h"
 #include "pds/samplers/wei.h"
 
 
@@ -75,6 +74,7 @@
 #include <utility>
 #include <vector>
 
+#include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/grid_neighbourhood.h"
 #include "pds/parallel.h"
