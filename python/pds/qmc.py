@@ -43,6 +43,7 @@ import numbers
 import numpy as np
 
 from . import generate as _generate
+from . import methods as _pds_methods
 
 __all__ = ["PoissonDisk"]
 
@@ -71,7 +72,8 @@ class PoissonDisk:
     Parameters
     ----------
     d : int
-        Dimension of the parameter space: 2 or 3.
+        Dimension of the parameter space: any the method takes (1 to 8
+        for "bridson" and "dart-throwing", 1 to 4 for "ebeida" and "wei").
     radius : float
         Minimal distance to keep between points (default 0.05), in the units
         of the bounds.
@@ -113,8 +115,11 @@ class PoissonDisk:
     ):
         if isinstance(d, bool) or not isinstance(d, (numbers.Integral, np.integer)) or d < 0:
             raise ValueError("d must be a non-negative integer value")
-        if d not in (2, 3):
-            raise ValueError(f"pds.qmc.PoissonDisk samples in 2 or 3 dimensions, got d={d}")
+        dims = next((m["dims"] for m in _pds_methods() if m["name"] == method), None)
+        if dims is not None and d not in dims:
+            raise ValueError(
+                f"pds.qmc.PoissonDisk: method {method!r} samples in {dims.start} to {dims[-1]} dimensions, got d={d}"
+            )
         if hypersphere not in ("volume", "surface"):
             raise ValueError(
                 f"{hypersphere!r} is not a valid hypersphere sampling method. "

@@ -107,8 +107,10 @@ def test_constructor_errors_match_scipy():
             qmc.PoissonDisk(2, **kwargs)
     with pytest.raises(ValueError):
         qmc.PoissonDisk(-1)
-    with pytest.raises(ValueError, match="2 or 3 dimensions"):
-        qmc.PoissonDisk(4)
+    with pytest.raises(ValueError, match="1 to 8 dimensions, got d=9"):
+        qmc.PoissonDisk(9)
+    with pytest.raises(ValueError, match="1 to 4 dimensions, got d=5"):
+        qmc.PoissonDisk(5, method="ebeida")
     with pytest.raises(NotImplementedError):
         qmc.PoissonDisk(2, optimization="lloyd")
     with pytest.raises(ValueError, match="radius"):
@@ -120,3 +122,13 @@ def test_the_rest_of_scipy_qmc_passes_through():
     assert qmc.Sobol is scipy_qmc.Sobol
     with pytest.raises(AttributeError):
         qmc.NoSuchThing  # noqa: B018
+
+
+@pytest.mark.parametrize("d", [1, 4, 6])
+def test_poisson_disk_in_other_dimensions(d):
+    """Past the plane and space the drop-in keeps its radius and its bounds."""
+    radius = {1: 0.01, 4: 0.25, 6: 0.45}[d]
+    x = qmc.PoissonDisk(d, radius=radius, seed=3).fill_space()
+    assert x.shape[1] == d and len(x) > 20
+    assert ((x >= 0) & (x < 1)).all()
+    assert pds.min_distance(x)[0] >= radius
