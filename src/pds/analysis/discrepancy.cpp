@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/parallel.h"
 
@@ -321,14 +322,7 @@ double star_discrepancy(const PointSet<D>& points, const Domain<D>& domain) {
 #define PDS_INSTANTIATE(D)                                                       \
   template double l2_star_discrepancy<D>(const PointSet<D>&, const Domain<D>&); \
   template double star_discrepancy<D>(const PointSet<D>&, const Domain<D>&);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

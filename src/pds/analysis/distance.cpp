@@ -4,6 +4,7 @@
 #include <string>
 
 #include "kd_tree.h"
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/grid.h"
 #include "pds/parallel.h"
@@ -166,14 +167,7 @@ MinDistance min_distance_brute_force(const PointSet<D>& points, const Domain<D>&
   template NearestNeighbors nearest_neighbors<D>(const PointSet<D>&, const Domain<D>&); \
   template MinDistance min_distance<D>(const PointSet<D>&, const Domain<D>&);           \
   template MinDistance min_distance_brute_force<D>(const PointSet<D>&, const Domain<D>&);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

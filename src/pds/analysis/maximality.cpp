@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kd_tree.h"
+#include "pds/detail/instantiate.h"
 #include "pds/grid.h"
 #include "pds/limits.h"
 
@@ -187,14 +188,7 @@ Maximality<D> check_maximality(const PointSet<D>& points, const Domain<D>& domai
 
 #define PDS_INSTANTIATE(D) \
   template Maximality<D> check_maximality<D>(const PointSet<D>&, const Domain<D>&, double, double, std::size_t);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -13,6 +13,7 @@
 #include "pds/analysis/maximality.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/analysis/spacing.h"
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/limits.h"
 
@@ -270,14 +271,7 @@ AnalysisReport analyze(std::span<const PointCloud> sets, std::span<const double>
 #define PDS_INSTANTIATE(D)                                                                                  \
   template AnalysisReport analyze<D>(std::span<const PointSet<D>>, const Domain<D>&, const AnalysisOptions&, \
                                      AnalysisCurves*);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -5,6 +5,7 @@
 
 #include "pds/analysis/distance.h"
 #include "pds/analysis/relative_radius.h"
+#include "pds/detail/instantiate.h"
 
 namespace pds {
 
@@ -27,14 +28,7 @@ Spacing spacing(const PointSet<D>& points, const Domain<D>& domain) {
 }
 
 #define PDS_INSTANTIATE(D) template Spacing spacing<D>(const PointSet<D>&, const Domain<D>&);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

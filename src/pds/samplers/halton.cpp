@@ -25,6 +25,7 @@
 
 #include "pds/samplers/halton.h"
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 
 namespace pds {
@@ -55,14 +56,7 @@ PointSet<D> halton(const HaltonParams& params, const Domain<D>& domain, std::uin
 }
 
 #define PDS_INSTANTIATE(D) template PointSet<D> halton<D>(const HaltonParams&, const Domain<D>&, std::uint64_t);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/samplers/low_discrepancy.h"
 
@@ -71,14 +72,7 @@ PointSet<D> latin_hypercube(const LatinHypercubeParams& params, const Domain<D>&
 
 #define PDS_INSTANTIATE(D) \
   template PointSet<D> latin_hypercube<D>(const LatinHypercubeParams&, const Domain<D>&, std::uint64_t);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -1,6 +1,7 @@
 // Uniform white noise: every coordinate an independent uniform draw from one
 // stream, point after point; one code path for every dimension.
 #include "pds/samplers/random.h"
+#include "pds/detail/instantiate.h"
 
 namespace pds {
 
@@ -27,14 +28,7 @@ PointSet<D> white_noise(const WhiteNoiseParams& params, const Domain<D>& domain,
 
 #define PDS_INSTANTIATE(D) \
   template PointSet<D> white_noise<D>(const WhiteNoiseParams&, const Domain<D>&, std::uint64_t);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -6,6 +6,7 @@
 
 #include "pds/analysis/relative_radius.h"
 #include "pds/detail/format.h"
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/limits.h"
 
@@ -29,14 +30,7 @@ void require_count_fits(const char* method, std::uint64_t count, double radius, 
 #define PDS_INSTANTIATE(D)                                                           \
   template double radius_for_count<D>(std::uint64_t, const Domain<D>&, double); \
   template void require_count_fits<D>(const char*, std::uint64_t, double, const Domain<D>&);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -34,6 +34,7 @@
 #include <cstring>
 #include <vector>
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 
 namespace pds {
@@ -230,14 +231,7 @@ PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint6
 }
 
 #define PDS_INSTANTIATE(D) template PointSet<D> sobol<D>(const SobolParams&, const Domain<D>&, std::uint64_t);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
-PDS_INSTANTIATE(4)
-PDS_INSTANTIATE(5)
-PDS_INSTANTIATE(6)
-PDS_INSTANTIATE(7)
-PDS_INSTANTIATE(8)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds
