@@ -41,6 +41,15 @@ struct Domain {
   static Domain unit(bool periodic = false) { return Domain{filled(0.0), filled(1.0), periodic}; }
   static Domain box(const Point<D>& lo, const Point<D>& hi) { return Domain{lo, hi, false}; }
   static Domain torus(const Point<D>& lo, const Point<D>& hi) { return Domain{lo, hi, true}; }
+  /// The domain of D run-time bounds (lo[0..D), hi[0..D)); not validated.
+  static Domain from_bounds(const double* lo, const double* hi, bool periodic) {
+    Domain d{{}, {}, periodic};
+    for (int i = 0; i < D; ++i) {
+      d.lo[i] = lo[i];
+      d.hi[i] = hi[i];
+    }
+    return d;
+  }
 
   double extent(int axis) const { return hi[axis] - lo[axis]; }
 

@@ -66,7 +66,7 @@ class Grid {
   /// (2 sqrt(D) + 1)^D cells with edge radius/sqrt(D) (9^4 = 6,561 in 4D,
   /// 7^8 = 5.8 million in 8D) but as 3^D with edge radius, of which the
   /// pruned walk (for_each_cell_near) visits about sum_k C(D,k) V_k (V_k the
-  /// volume of the unit k-ball): 47 in 4D, 255 in 6D, 1,170 in 8D.
+  /// volume of the unit k-ball): 50 in 4D, 255 in 6D, 1,166 in 8D.
   static Grid for_conflicts(const Domain<D>& domain, double radius, std::size_t max_cells = kMaxGridCells) {
     if constexpr (D <= 3) return for_radius(domain, radius, max_cells);
     // Fewer, larger cells when the domain would need too many: still correct.

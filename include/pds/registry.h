@@ -163,10 +163,7 @@ Domain<D> GenerateRequest::domain() const {
     if (lo.size() != static_cast<std::size_t>(D) || hi.size() != static_cast<std::size_t>(D))
       throw InvalidArgument("bounds: need " + std::to_string(D) + " lower and " + std::to_string(D) +
                             " upper values for dimension " + std::to_string(D));
-    for (int i = 0; i < D; ++i) {
-      d.lo[i] = lo[i];
-      d.hi[i] = hi[i];
-    }
+    d = Domain<D>::from_bounds(lo.data(), hi.data(), torus);
   }
   d.validate();
   return d;

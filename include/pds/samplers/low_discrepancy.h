@@ -271,6 +271,16 @@ class BoxMap {
 /// addressable here (count * dim doubles); returns count * dim.
 std::size_t cloud_doubles(const std::string& method, std::uint64_t count, int dim);
 
+/// A PointCloud of `count` points of the box's dimension, written by
+/// fill(out) (out: count * dim doubles, point after point).
+template <class Fill>
+PointCloud fill_cloud(const std::string& method, std::uint64_t count, const CloudBox& box, Fill&& fill) {
+  PointCloud cloud{box.dim(), {}};
+  cloud.coords.resize(cloud_doubles(method, count, box.dim()));
+  fill(cloud.coords.data());
+  return cloud;
+}
+
 /// The Halton bases: the first kRadixPrimes primes (2, 3, 5, ..., 104729),
 /// computed once. Halton takes one per axis, Hammersley one per axis past the first.
 inline constexpr int kRadixPrimes = 10000;

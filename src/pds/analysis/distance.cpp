@@ -130,12 +130,7 @@ NearestNeighbors nearest_neighbors(const PointCloud& points, std::span<const dou
   if (dim >= kMinDim && dim <= kMaxDim)
     return visit_dim<kMinDim, kMaxDim>(dim, [&](auto d) {
       constexpr int D = decltype(d)::value;
-      Domain<D> domain;
-      for (int k = 0; k < D; ++k) {
-        domain.lo[k] = lo[k];
-        domain.hi[k] = hi[k];
-      }
-      domain.periodic = periodic;
+      const Domain<D> domain = Domain<D>::from_bounds(lo.data(), hi.data(), periodic);
       return nearest_neighbors<D>(points.as<D>(), domain);
     });
   return nearest_by_tree(points.coords.data(), n, dim, lo.data(), hi.data(), periodic);

@@ -201,12 +201,7 @@ AnalysisReport analyze(std::span<const PointCloud> sets, std::span<const double>
   if (dim >= kMinDim && dim <= kMaxDim)
     return visit_dim<kMinDim, kMaxDim>(dim, [&](auto d) {
       constexpr int D = decltype(d)::value;
-      Domain<D> domain;
-      for (int k = 0; k < D; ++k) {
-        domain.lo[k] = lo[k];
-        domain.hi[k] = hi[k];
-      }
-      domain.periodic = periodic;
+      const Domain<D> domain = Domain<D>::from_bounds(lo.data(), hi.data(), periodic);
       domain.validate();
       std::vector<PointSet<D>> typed;
       for (const PointCloud& s : sets) typed.push_back(s.as<D>());

@@ -110,31 +110,33 @@ void validate(const Method& m, const GenerateRequest& r) {
   if (r.dim > kMaxDim) {
     // Run-time dimensions: sequences and designs, which take a count only.
     std::vector<double> lo, hi;
-    r.bounds(lo, hi);
+    r.bounds(lo, hi);  // validates them
     if (r.radius) throw InvalidArgument(m.name + " does not take --radius (use --count)");
-  } else visit_dim<kMinDim, kMaxDim>(r.dim, [&](auto d) {
-    constexpr int D = decltype(d)::value;
-    const Domain<D> domain = r.domain<D>();  // validates the bounds
-    if (m.square_torus_only) {
-      bool square = true;
-      for (int i = 1; i < D; ++i) square = square && domain.extent(i) == domain.extent(0);
-      if (!domain.periodic || !square)
-        throw InvalidArgument(m.name + " runs on a torus with equal periods only (--torus, square --bounds)");
-    }
-    if (r.radius) {
-      if (!m.takes_radius) throw InvalidArgument(m.name + " does not take --radius (use --count)");
-      require_radius_budget(domain, *r.radius, r.max_points);
-      // An axis a million times thinner than the radius is a lower-dimensional
-      // set in disguise; dart throwing ran for minutes on one 1e-100 wide.
-      for (int a = 0; a < D; ++a)
-        if (*r.radius > 1e6 * domain.extent(a))
-          throw InvalidArgument("bounds: axis " + std::to_string(a) + " is " +
-                                detail::format_number(domain.extent(a)) +
-                                " wide, more than 10^6 times thinner than the radius " +
-                                detail::format_number(*r.radius) + " (sample in fewer dimensions)");
-    }
-    return 0;
-  });
+  } else {
+    visit_dim<kMinDim, kMaxDim>(r.dim, [&](auto d) {
+      constexpr int D = decltype(d)::value;
+      const Domain<D> domain = r.domain<D>();  // validates the bounds
+      if (m.square_torus_only) {
+        bool square = true;
+        for (int i = 1; i < D; ++i) square = square && domain.extent(i) == domain.extent(0);
+        if (!domain.periodic || !square)
+          throw InvalidArgument(m.name + " runs on a torus with equal periods only (--torus, square --bounds)");
+      }
+      if (r.radius) {
+        if (!m.takes_radius) throw InvalidArgument(m.name + " does not take --radius (use --count)");
+        require_radius_budget(domain, *r.radius, r.max_points);
+        // An axis a million times thinner than the radius is a lower-dimensional
+        // set in disguise; dart throwing ran for minutes on one 1e-100 wide.
+        for (int a = 0; a < D; ++a)
+          if (*r.radius > 1e6 * domain.extent(a))
+            throw InvalidArgument("bounds: axis " + std::to_string(a) + " is " +
+                                  detail::format_number(domain.extent(a)) +
+                                  " wide, more than 10^6 times thinner than the radius " +
+                                  detail::format_number(*r.radius) + " (sample in fewer dimensions)");
+      }
+      return 0;
+    });
+  }
   if (r.count) {
     if (!m.takes_count) throw InvalidArgument(m.name + " does not take --count (use --radius)");
     require_count(*r.count, r.max_points);

@@ -41,10 +41,7 @@ void halton_fill(const HaltonParams& params, const CloudBox& box, std::uint64_t 
 }
 
 PointCloud halton(const HaltonParams& params, const CloudBox& box, std::uint64_t seed) {
-  PointCloud cloud{box.dim(), {}};
-  cloud.coords.resize(cloud_doubles("halton", params.count, box.dim()));
-  halton_fill(params, box, seed, cloud.coords.data());
-  return cloud;
+  return fill_cloud("halton", params.count, box, [&](double* out) { halton_fill(params, box, seed, out); });
 }
 
 template <int D>

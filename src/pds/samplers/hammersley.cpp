@@ -41,10 +41,7 @@ void hammersley_fill(const HammersleyParams& params, const CloudBox& box, std::u
 }
 
 PointCloud hammersley(const HammersleyParams& params, const CloudBox& box, std::uint64_t seed) {
-  PointCloud cloud{box.dim(), {}};
-  cloud.coords.resize(cloud_doubles("hammersley", params.count, box.dim()));
-  hammersley_fill(params, box, seed, cloud.coords.data());
-  return cloud;
+  return fill_cloud("hammersley", params.count, box, [&](double* out) { hammersley_fill(params, box, seed, out); });
 }
 
 template <int D>

@@ -55,10 +55,7 @@ void latin_hypercube_fill(const LatinHypercubeParams& params, const CloudBox& bo
 }
 
 PointCloud latin_hypercube(const LatinHypercubeParams& params, const CloudBox& box, std::uint64_t seed) {
-  PointCloud cloud{box.dim(), {}};
-  cloud.coords.resize(cloud_doubles("latin-hypercube", params.count, box.dim()));
-  latin_hypercube_fill(params, box, seed, cloud.coords.data());
-  return cloud;
+  return fill_cloud("latin-hypercube", params.count, box, [&](double* out) { latin_hypercube_fill(params, box, seed, out); });
 }
 
 template <int D>

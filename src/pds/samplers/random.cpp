@@ -13,10 +13,7 @@ void white_noise_fill(const WhiteNoiseParams& params, const CloudBox& box, std::
 }
 
 PointCloud white_noise(const WhiteNoiseParams& params, const CloudBox& box, std::uint64_t seed) {
-  PointCloud cloud{box.dim(), {}};
-  cloud.coords.resize(cloud_doubles("random", params.count, box.dim()));
-  white_noise_fill(params, box, seed, cloud.coords.data());
-  return cloud;
+  return fill_cloud("random", params.count, box, [&](double* out) { white_noise_fill(params, box, seed, out); });
 }
 
 template <int D>
