@@ -47,7 +47,8 @@ struct BestCandidateResult {
 /// candidates while m*i < kBestCandidateExactBelow, and from there on a
 /// Poisson process of candidates with mean m*i (count within a few per cent
 /// of m*i), which lets the search skip every region that cannot hold the
-/// winner. Distances are the domain's (nearest periodic image on a torus).
+/// winner. From 4 dimensions every round draws exactly m*i candidates (the
+/// literal method, m N^2 / 2 candidates in all; refused past 5e8). Distances are the domain's (nearest periodic image on a torus).
 /// Guarantees: samples in [lo, hi); same seed, same points; each reported
 /// distance is exact (Domain::distance2).
 /// Invalid (InvalidArgument): m < 1; neither count nor radius; count 0;

@@ -123,7 +123,7 @@ const Method& best_candidate_method() {
       // Measured over seeds 1-5 (m = 10; it stops at the first round whose best
       // candidate is closer than the radius): 2D box 0.746-0.750, torus
       // 0.729-0.740; 3D at r = 0.1, box 0.791-0.801, torus 0.747-0.749.
-      .dims = {kMinDim, kSpaceDim},
+      .dims = {kMinDim, kMaxDim},
       .rho = {{2, false, 0.02, 0.71, 0.78},
               {2, true, 0.02, 0.70, 0.77},
               {3, false, 0.1, 0.76, 0.83},
@@ -131,7 +131,7 @@ const Method& best_candidate_method() {
       .params = {{"m", kBestCandidateDefaultM, 1, 1000, true, "candidates per sample already placed"}},
       .run =
           [](const GenerateRequest& r) {
-            return run_typed<kMinDim, kSpaceDim>(r, [&](const auto& domain) {
+            return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               BestCandidateParams params;
               params.count = r.count;
               params.radius = r.radius;

@@ -287,7 +287,7 @@ class BridsonGrid {
   // sample is written to every padded position congruent to its cell.
   void copy_to_margin(const Point<D>& p, std::size_t cell) {
     // At most 1 + 2 * reach positions an axis (a period of one cell).
-    std::array<std::array<int, 2 * kMaxReach + 1>, D> positions;
+    std::array<std::array<int, 2 * kMaxReach + 1>, D> positions{};
     std::array<int, D> count{};
     for (int i = 0; i < D; ++i) {
       const int c = static_cast<int>(cell / stride_[i] % static_cast<std::size_t>(padded_[i]));
