@@ -78,6 +78,8 @@ const Method& bridson_method() {
               {3, false, 0.08, 0.74, 0.79},
               {3, true, 0.08, 0.72, 0.76}},
       .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
+                 {"surface", 0, 0, 1, true,
+                  "1: candidates on the sphere of radius 1.001 r, not in the annulus [r, 2r] (denser)"},
                  {"rho", kBridsonCountRho, 0.01, 1, false,
                   "relative radius that sets the radius for --count without --radius"}},
       .run =
@@ -85,6 +87,7 @@ const Method& bridson_method() {
             return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               BridsonParams params;
               params.k = static_cast<int>(r.param("k", 30));
+              params.surface = r.param("surface", 0) != 0;
               params.count = r.count;
               if (r.radius) {
                 params.radius = *r.radius;
