@@ -46,6 +46,10 @@ struct GenerateRequest {
   int threads = 0;  // 0: all hardware threads
   std::uint64_t max_points = kDefaultMaxPoints;
   std::map<std::string, double> params;
+  /// Output rounded to float32 that keeps the promises (pds/float32.h): every
+  /// point in [lo, hi), and with a radius every pair at least that far apart,
+  /// decided on the rounded coordinates. The doubles returned are float32 values.
+  bool float32 = false;
 
   template <int D>
   Domain<D> domain() const;
@@ -123,7 +127,9 @@ std::span<const Method> methods();
 const Method& find_method(const std::string& name);
 
 /// Validates the request against the method (dimension, domain, sizing,
-/// parameters, point budget) and runs it.
+/// parameters, point budget) and runs it; with request.float32, rounds the
+/// result keeping its promises (a method that promises a minimum distance
+/// samples at the slightly larger radius of float32_sampling_radius).
 PointCloud generate(const std::string& method, const GenerateRequest& request);
 
 /// The relative radius (Lagae & Dutre 2008; analysis/relative_radius.h) at

@@ -11,7 +11,8 @@
 // little-endian float64 ('<f8', the default) or float32 ('<f4'); Fortran
 // order and big-endian arrays are read too. Writing float32 rounds each
 // coordinate to the nearest float, which can move two points at the minimum
-// distance a little closer: use float64 where the distance must hold exactly.
+// distance a little closer; GenerateRequest::float32 (pds/float32.h) makes a
+// set whose float32 values keep it.
 //
 // Errors name the file and, for CSV, the line. Writing goes to a temporary
 // file beside the target that is renamed over it only when complete, so a

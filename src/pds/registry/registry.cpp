@@ -7,6 +7,7 @@
 #include "descriptors.h"
 #include "pds/detail/format.h"
 #include "pds/error.h"
+#include "pds/float32.h"
 
 namespace pds {
 
@@ -168,12 +169,37 @@ void validate(const Method& m, const GenerateRequest& r) {
   }
 }
 
+// Runs the method so that its output, rounded to float32, keeps the
+// promises of the request (pds/float32.h explains the radius it samples at).
+PointCloud run_float32(const Method& m, const GenerateRequest& request) {
+  std::vector<double> lo, hi;
+  request.bounds(lo, hi);
+  const double spacing = float32_spacing(lo, hi);
+  if (!request.radius || !m.min_distance) {
+    PointCloud points = m.run(request);
+    round_to_float32(points, lo, hi);
+    return points;
+  }
+  const double r = *request.radius;
+  GenerateRequest inflated = request;
+  // The bound makes the first attempt succeed; the check guards the bound.
+  constexpr int kAttempts = 4;
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    inflated.radius = float32_sampling_radius(r, request.dim, spacing, attempt);
+    PointCloud points = m.run(inflated);
+    round_to_float32(points, lo, hi);
+    if (!find_pair_closer_than(points, lo, hi, request.torus, r)) return points;
+  }
+  throw Failure(m.name + ": float32 rounding brought two points closer than radius " + detail::format_number(r) +
+                " in " + std::to_string(kAttempts) + " attempts (use float64)");
+}
+
 }  // namespace
 
 PointCloud generate(const std::string& method, const GenerateRequest& request) {
   const Method& m = find_method(method);
   validate(m, request);
-  return m.run(request);
+  return request.float32 ? run_float32(m, request) : m.run(request);
 }
 
 }  // namespace pds
