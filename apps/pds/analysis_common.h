@@ -19,7 +19,8 @@ namespace pds::cli {
 std::map<std::string, double> parse_params(const std::vector<std::string>& items);
 
 /// The options every subcommand that generates shares: --count, --radius,
-/// --dim, --torus, --bounds, --seed, --threads, --max-points, --param.
+/// --dim, --torus, --bounds, --seed, --threads, --max-points, --max-memory,
+/// --param.
 struct GenerationOptions {
   DomainOptions domain;
   std::uint64_t count = 0;
@@ -27,6 +28,7 @@ struct GenerationOptions {
   std::uint64_t seed = 0;
   int threads = 0;
   std::uint64_t max_points = kDefaultMaxPoints;
+  std::string max_memory;  // e.g. 512M; empty: no budget
   std::vector<std::string> params;
   /// Set by add_generation_options; null for options left out.
   CLI::Option* count_option = nullptr;
@@ -59,6 +61,10 @@ bool any_generation_option_given(const GenerationOptions& options);
 /// is the first), sized by pds::size_request (a radius-only method asked for
 /// a count gets the radius of relative radius kCountRelativeRadius).
 std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets);
+
+/// Bytes from a size such as 512M, 2G, 1.5GiB or 1000000 (K, M, G, T: powers
+/// of 1024); throws InvalidArgument naming the option.
+double parse_size(const std::string& text, const std::string& option);
 
 /// Writes a CSV with a header line and one row per index of the columns.
 void write_csv_columns(const std::string& path, const std::vector<std::string>& names,

@@ -22,6 +22,7 @@ const Method& fpo_method() {
       .exact_count = true,
       .square_torus_only = true,
       .dims = {2, 2},
+      .memory_ratio = 13,
       .params = {{"sweeps", 100, 1, 100000, true, "most sweeps (each moves every point once)"},
                  {"tolerance", 1e-4, 0, 1, false,
                   "stop after a sweep that grows the minimum distance by less than this fraction"},

@@ -38,6 +38,7 @@ const Method& dart_throwing_method() {
               {2, true, 0.02, 0.73, 0.77},
               {3, false, 0.08, 0.77, 0.83},
               {3, true, 0.08, 0.74, 0.79}},
+      .memory_ratio = 3.5,
       .params = {{"all-pairs", 0, 0, 1, true, "1: the literal check against every sample (same output, O(N) a dart)"},
                  {"failures", 0, 0, 1e15, true,
                   "consecutive rejected darts that end the loop; 0: max(10^4, packing bound at the radius)"},
@@ -77,6 +78,7 @@ const Method& bridson_method() {
               {2, true, 0.02, 0.71, 0.75},
               {3, false, 0.08, 0.74, 0.79},
               {3, true, 0.08, 0.72, 0.76}},
+      .memory_ratio = 6,
       .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
                  {"rho", kBridsonCountRho, 0.01, 1, false,
                   "relative radius that sets the radius for --count without --radius"}},
@@ -128,6 +130,7 @@ const Method& best_candidate_method() {
               {2, true, 0.02, 0.70, 0.77},
               {3, false, 0.1, 0.76, 0.83},
               {3, true, 0.1, 0.72, 0.78}},
+      .memory_ratio = 31,
       .params = {{"m", kBestCandidateDefaultM, 1, 1000, true, "candidates per sample already placed"}},
       .run =
           [](const GenerateRequest& r) {
@@ -155,6 +158,7 @@ const Method& elimination_method() {
       .takes_count = true,
       .exact_count = true,
       .progressive = true,
+      .memory_ratio = 23,
       .params = {{"candidates", 5, 1, 100, false, "white-noise candidates as a multiple of the count"},
                  {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},

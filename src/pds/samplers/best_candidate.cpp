@@ -638,10 +638,10 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
                                           std::uint64_t seed) {
   validate(params, domain);
   // The leaves, up to kLeavesPerSample for each of the final samples (a
-  // radius alone leaves about 0.6 of the packing bound): refuse at once what
+  // radius alone leaves about typical_count): refuse at once what
   // would exceed the cell budget later.
   const double expected =
-      params.count ? static_cast<double>(*params.count) : 0.6 * packing_count(domain.volume(), *params.radius, D);
+      params.count ? static_cast<double>(*params.count) : typical_count(domain.volume(), *params.radius, D);
   if (!kLiteral<D> && expected * kLeavesPerSample<D> > static_cast<double>(kMaxGridCells))
     throw InvalidArgument("best-candidate: the request needs more than " + std::to_string(kMaxGridCells) +
                           " leaf cells (" + format(expected) + " samples)");
