@@ -49,6 +49,8 @@ void add_generation_options(CLI::App& command, GenerationOptions& o, const Gener
   o.added.push_back(command
                         .add_option("--max-memory", o.max_memory,
                                     help("Refuse requests whose estimated peak memory exceeds this (e.g. 512M, 2G)")));
+  // Not in `added`: it applies to any run, not only to generation.
+  command.add_flag("--quiet,-q", o.quiet, help("No progress bar on the terminal"));
   o.added.push_back(command.add_option("--param,-P", o.params, help("Method parameter NAME=VALUE (repeatable)")));
 }
 
@@ -89,12 +91,14 @@ double parse_size(const std::string& text, const std::string& option) {
   return std::ldexp(value, 10 * static_cast<int>(unit.empty() ? 0 : power + 1));
 }
 
-std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets) {
+std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets,
+                                      const Progress& progress) {
   request = size_request(find_method(method), std::move(request));
   std::vector<PointCloud> out;
   const std::uint64_t first = request.seed;
   for (std::size_t s = 0; s < sets; ++s) {
     request.seed = first + s;
+    request.progress = part_of(progress, s, sets);
     out.push_back(generate(method, request));
   }
   return out;

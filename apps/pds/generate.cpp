@@ -7,6 +7,7 @@
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/registry.h"
+#include "terminal.h"
 
 namespace pds::cli {
 namespace {
@@ -37,8 +38,15 @@ void add_generate(CLI::App& app) {
   cmd->callback([opt] {
     GenerateRequest request = generation_request(opt->generation);
     request.float32 = opt->dtype == "float32";
-    const PointCloud points = generate(opt->method, request);
+    PointCloud points;
+    {
+      const ProgressBar bar(opt->method, opt->generation.quiet);
+      request.progress = bar.progress();
+      points = generate(opt->method, request);
+    }
+    if (opt->output != "-") interrupt_removes(temporary_path(opt->output));
     write_points(opt->output, points, opt->dtype == "float32" ? NpyType::Float32 : NpyType::Float64);
+    interrupt_removes("");
   });
 }
 

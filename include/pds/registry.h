@@ -20,6 +20,7 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -54,6 +55,9 @@ struct GenerateRequest {
   /// point in [lo, hi), and with a radius every pair at least that far apart,
   /// decided on the rounded coordinates. The doubles returned are float32 values.
   bool float32 = false;
+  /// Progress and cancellation (pds/progress.h), reported by the methods
+  /// that can run for long: best-candidate, dart-throwing, jones, fpo.
+  Progress progress;
 
   template <int D>
   Domain<D> domain() const;

@@ -34,6 +34,11 @@ PointCloud read_points(const std::string& path);
 /// `npy_type` applies to .npy only.
 void write_points(const std::string& path, const PointCloud& points, NpyType npy_type = NpyType::Float64);
 
+/// The temporary file write_points writes `path` to before renaming it over
+/// `path` (beside it, named after this process), so that a caller that stops
+/// the process (the command line on Ctrl-C) can remove it.
+std::string temporary_path(const std::string& path);
+
 /// Stream forms; `name` is used in error messages.
 PointCloud read_csv(std::istream& in, const std::string& name);
 void write_csv(std::ostream& out, const PointCloud& points);

@@ -27,7 +27,7 @@ const Method& jones_method() {
       .memory_ratio = 15.5,
       .run =
           [](const GenerateRequest& r) {
-            const JonesParams params{*r.radius, r.max_points};
+            const JonesParams params{*r.radius, r.max_points, r.progress};
             return PointCloud::from<2>(jones(params, r.domain<2>(), r.seed));
           },
   };

@@ -52,6 +52,7 @@ const Method& dart_throwing_method() {
               params.radius = r.radius ? *r.radius : radius_for_count(*r.count, domain, r.param("rho", kDartCountRho));
               params.all_pairs = r.param("all-pairs", 0) != 0;
               params.max_failures = static_cast<std::uint64_t>(r.param("failures", 0));
+              params.progress = r.progress;
               return dart_throwing(params, domain, r.seed);
             });
           },
@@ -139,6 +140,7 @@ const Method& best_candidate_method() {
               params.count = r.count;
               params.radius = r.radius;
               params.m = static_cast<int>(r.param("m", kBestCandidateDefaultM));
+              params.progress = r.progress;
               return best_candidate(params, domain, r.seed);
             });
           },

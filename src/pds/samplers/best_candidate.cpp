@@ -661,6 +661,7 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   double typical = -1.0, theta = kInf;
 
   BestCandidateResult<D> result;
+  ProgressReporter progress(params.progress, expected);
   PointSet<D> near;
   auto place = [&](const Point<D>& p, double distance) {
     result.points.push_back(p);
@@ -679,6 +680,7 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   }
   while (result.points.size() < wanted) {
     const std::uint64_t i = result.points.size();
+    progress.update(static_cast<double>(i));
     const std::uint64_t candidates = static_cast<std::uint64_t>(params.m) * i;
     double best2 = -1.0, best = -1.0;
     Point<D> winner{};
@@ -782,6 +784,7 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
     }
     place(winner, best);
   }
+  progress.finish();
   return result;
 }
 
