@@ -680,7 +680,8 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   }
   while (result.points.size() < wanted) {
     const std::uint64_t i = result.points.size();
-    progress.update(static_cast<double>(i));
+    // The literal method's rounds cost m*i each: its work grows as i^2.
+    progress.update(kLiteral<D> ? static_cast<double>(i) * static_cast<double>(i) / expected : static_cast<double>(i));
     const std::uint64_t candidates = static_cast<std::uint64_t>(params.m) * i;
     double best2 = -1.0, best = -1.0;
     Point<D> winner{};
