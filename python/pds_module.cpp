@@ -124,7 +124,7 @@ std::vector<pds::PointSet<D>> to_sets(const std::vector<InputArray>& sets) {
 py::array_t<double> generate(const std::string& method, std::optional<std::uint64_t> count,
                              std::optional<double> radius, int dim, std::vector<double> lo, std::vector<double> hi,
                              bool torus, std::uint64_t seed, int threads, std::uint64_t max_points,
-                             std::map<std::string, double> params, bool sized) {
+                             std::map<std::string, double> params, bool sized, bool float32) {
   pds::GenerateRequest request;
   request.dim = dim;
   request.lo = std::move(lo);
@@ -136,6 +136,7 @@ py::array_t<double> generate(const std::string& method, std::optional<std::uint6
   request.threads = threads;
   request.max_points = max_points;
   request.params = std::move(params);
+  request.float32 = float32;
   pds::PointCloud cloud;
   {
     py::gil_scoped_release unlocked;
@@ -304,7 +305,7 @@ PYBIND11_MODULE(_pds, m) {
   m.doc() = "The compiled half of the pds package; use the functions of `pds` itself.";
   m.def("generate", &generate, py::arg("method"), py::arg("count"), py::arg("radius"), py::arg("dim"), py::arg("lo"),
         py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"), py::arg("params"),
-        py::arg("sized"));
+        py::arg("sized"), py::arg("float32") = false);
   m.def("methods", &methods);
   m.def("periodogram", &periodogram, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
         py::arg("max_frequency"));

@@ -105,6 +105,7 @@ def generate(
     seed: int = 0,
     threads: int = 0,
     max_points: int = MAX_POINTS,
+    dtype="float64",
     **params: float,
 ) -> _np.ndarray:
     """Sample points with a registered method (the list is below).
@@ -115,12 +116,21 @@ def generate(
     ``params`` are the method's parameters (``k=10`` for Bridson; a hyphen in
     a name is written as an underscore). ``threads=0`` uses every core;
     results never depend on the thread count. Raises ValueError for bad
-    input, with the command line's message.
+    input, with the command line's message. ``dtype="float32"`` returns
+    float32 coordinates that keep the promises after rounding: every point
+    inside the bounds and, with ``radius``, every pair at least that far apart
+    (docs/point-files.md).
     """
-    return _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, False)
+    dt = _np.dtype(dtype)
+    if dt not in (_np.float64, _np.float32):
+        raise ValueError(f"dtype must be float64 or float32, got {dt}")
+    points = _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, False,
+                       dt == _np.float32)
+    # float32 output holds float32 values already: the cast is exact.
+    return points.astype(_np.float32) if dt == _np.float32 else points
 
 
-def _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, sized):
+def _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, sized, float32=False):
     if not isinstance(method, str):
         raise TypeError(f"method must be a str, got {type(method).__name__}")
     lo, hi = _bounds(bounds, dim)
@@ -137,6 +147,7 @@ def _generate(method, count, radius, dim, bounds, torus, seed, threads, max_poin
         _uint(max_points, "max_points"),
         _params(method, params),
         sized,
+        float32,
     )
 
 

@@ -21,8 +21,9 @@ def generate(
     seed: int = ...,
     threads: int = ...,
     max_points: int = ...,
+    dtype: npt.DTypeLike = ...,
     **params: float,
-) -> npt.NDArray[np.float64]: ...
+) -> npt.NDArray[np.float64] | npt.NDArray[np.float32]: ...
 def tile(
     method: str,
     *,

@@ -11,6 +11,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -25,6 +26,7 @@ struct BestCandidateParams {
   std::optional<std::uint64_t> count;  // samples to place
   std::optional<double> radius;        // stop (or fail, with a count) once the best candidate is closer than this
   int m = kBestCandidateDefaultM;      // candidates per existing sample, >= 1
+  Progress progress;                   // optional progress report and cancellation (pds/progress.h)
 };
 
 template <int D>

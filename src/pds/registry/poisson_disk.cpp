@@ -38,6 +38,7 @@ const Method& dart_throwing_method() {
               {2, true, 0.02, 0.73, 0.77},
               {3, false, 0.08, 0.77, 0.83},
               {3, true, 0.08, 0.74, 0.79}},
+      .memory_ratio = 3.5,
       .params = {{"all-pairs", 0, 0, 1, true, "1: the literal check against every sample (same output, O(N) a dart)"},
                  {"failures", 0, 0, 1e15, true,
                   "consecutive rejected darts that end the loop; 0: max(10^4, packing bound at the radius)"},
@@ -51,6 +52,7 @@ const Method& dart_throwing_method() {
               params.radius = r.radius ? *r.radius : radius_for_count(*r.count, domain, r.param("rho", kDartCountRho));
               params.all_pairs = r.param("all-pairs", 0) != 0;
               params.max_failures = static_cast<std::uint64_t>(r.param("failures", 0));
+              params.progress = r.progress;
               return dart_throwing(params, domain, r.seed);
             });
           },
@@ -77,6 +79,7 @@ const Method& bridson_method() {
               {2, true, 0.02, 0.71, 0.75},
               {3, false, 0.08, 0.74, 0.79},
               {3, true, 0.08, 0.72, 0.76}},
+      .memory_ratio = 6,
       .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
                  {"surface", 0, 0, 1, true,
                   "1: candidates on the sphere of radius 1.001 r, not in the annulus [r, 2r] (denser)"},
@@ -131,6 +134,7 @@ const Method& best_candidate_method() {
               {2, true, 0.02, 0.70, 0.77},
               {3, false, 0.1, 0.76, 0.83},
               {3, true, 0.1, 0.72, 0.78}},
+      .memory_ratio = 31,
       .params = {{"m", kBestCandidateDefaultM, 1, 1000, true, "candidates per sample already placed"}},
       .run =
           [](const GenerateRequest& r) {
@@ -139,6 +143,7 @@ const Method& best_candidate_method() {
               params.count = r.count;
               params.radius = r.radius;
               params.m = static_cast<int>(r.param("m", kBestCandidateDefaultM));
+              params.progress = r.progress;
               return best_candidate(params, domain, r.seed);
             });
           },
@@ -158,6 +163,7 @@ const Method& elimination_method() {
       .takes_count = true,
       .exact_count = true,
       .progressive = true,
+      .memory_ratio = 23,
       .params = {{"candidates", 5, 1, 100, false, "white-noise candidates as a multiple of the count"},
                  {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},

@@ -638,10 +638,10 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
                                           std::uint64_t seed) {
   validate(params, domain);
   // The leaves, up to kLeavesPerSample for each of the final samples (a
-  // radius alone leaves about 0.6 of the packing bound): refuse at once what
+  // radius alone leaves about typical_count): refuse at once what
   // would exceed the cell budget later.
   const double expected =
-      params.count ? static_cast<double>(*params.count) : 0.6 * packing_count(domain.volume(), *params.radius, D);
+      params.count ? static_cast<double>(*params.count) : typical_count(domain.volume(), *params.radius, D);
   if (!kLiteral<D> && expected * kLeavesPerSample<D> > static_cast<double>(kMaxGridCells))
     throw InvalidArgument("best-candidate: the request needs more than " + std::to_string(kMaxGridCells) +
                           " leaf cells (" + format(expected) + " samples)");
@@ -661,6 +661,7 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   double typical = -1.0, theta = kInf;
 
   BestCandidateResult<D> result;
+  ProgressReporter progress(params.progress, expected);
   PointSet<D> near;
   auto place = [&](const Point<D>& p, double distance) {
     result.points.push_back(p);
@@ -679,6 +680,8 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   }
   while (result.points.size() < wanted) {
     const std::uint64_t i = result.points.size();
+    // The literal method's rounds cost m*i each: its work grows as i^2.
+    progress.update(kLiteral<D> ? static_cast<double>(i) * static_cast<double>(i) / expected : static_cast<double>(i));
     const std::uint64_t candidates = static_cast<std::uint64_t>(params.m) * i;
     double best2 = -1.0, best = -1.0;
     Point<D> winner{};
@@ -782,6 +785,7 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
     }
     place(winner, best);
   }
+  progress.finish();
   return result;
 }
 
