@@ -3,10 +3,10 @@
 //
 // Method: every candidate i gets the weight w_i = sum over the other
 // candidates j within d_max of (1 - max(d_ij, d_min) / d_max)^alpha
-// (section 3, with the weight limit of section 3.2). The heaviest candidate
-// is removed and its contribution subtracted from each remaining neighbour's
-// weight, until N remain (the paper keeps the weights in a max-heap with
-// decrease-key; here a winner tree, below, gives the same order faster). d_max = 2 r_max, r_max the radius of the
+// (section 3, with the weight limit of section 3.2). The candidates sit in a
+// max-heap on their weights; the top one is removed and its contribution
+// subtracted from each remaining neighbour, whose heap entry moves down
+// (decrease-key), until N remain. d_max = 2 r_max, r_max the radius of the
 // densest packing of N balls in the domain's volume (hexagonal in 2D, FCC in
 // 3D: analysis/relative_radius.h), so d_max is the largest minimum distance N
 // samples could have. Progressive order (section 5): the N survivors are
@@ -19,11 +19,11 @@
 // Neighbour search: the candidates are sorted by the cell of a uniform grid
 // of edge about d_max / 2 (GridNeighbourhood's cell arithmetic), so the
 // candidates within d_max of a point are the contiguous runs of the cells of
-// one window (5 cells an axis), each cell once, wrapped across a torus's seam,
-// and the neighbours of a point sit near it in memory.
+// one window (5 cells an axis), each cell once, wrapped across a torus's seam.
 // On a torus distances are to the nearest periodic image (Domain::distance2),
-// so every candidate counts once even when d_max exceeds half a period. Equal
-// weights go smaller index first, so the result is deterministic.
+// so every candidate counts once even when d_max exceeds half a period. The
+// heap holds (weight, index) pairs, ties broken by index, so the result is
+// deterministic.
 //
 // Guarantees: exactly N samples, each a candidate (so inside the domain);
 // same seed, same points. No minimum distance: nothing bounds the closest
@@ -33,7 +33,7 @@
 // elimination, with M candidates, k ~ 18 (2D) or ~30 (3D) neighbours within
 // d_max for M = 5N, k' the ones still alive; progressive order adds the same
 // on N, N/2, ... samples (about twice the cost on N). Memory: the sorted
-// candidates, a weight and a tree node each, and the grid's cell
+// candidates, a heap entry and a heap position each, and the grid's cell
 // starts (about 4 cells a candidate).
 
 #include "pds/samplers/elimination.h"
@@ -131,6 +131,7 @@ class CellIndex {
   }
 
   std::size_t size() const { return points_.size(); }
+
   const Point<D>& point(std::uint32_t k) const { return points_[k]; }
   std::uint32_t original(std::uint32_t k) const { return original_[k]; }
 
@@ -168,59 +169,67 @@ class CellIndex {
   std::vector<std::uint32_t> original_;
 };
 
-// The candidates by weight, heaviest first (equal weights: smaller index
-// first), as a winner tree: a complete binary tree over the weights whose
-// inner nodes hold the index of the heaviest leaf below them. The candidates
-// are sorted by cell, so the neighbours whose weights drop after a removal are
-// leaves near each other, and lowering a weight climbs only while that leaf
-// was the winner (rarely more than a level or two); only the removal of the
-// top climbs the whole height. A binary heap would instead sift the top down
-// through ~log2 M levels at scattered addresses on every removal. The winner
-// is the maximum of a total order, so the elimination order is the one any
-// exact priority queue gives.
-class WinnerTree {
+// A binary max-heap of (weight, index) with the position of each index, for
+// decrease-key. Larger weight first; equal weights, smaller index first.
+class WeightHeap {
  public:
-  explicit WinnerTree(std::vector<double> weights) : weights_(std::move(weights)) {
-    const std::size_t n = weights_.size();
-    while (leaves_ < n) leaves_ *= 2;
-    weights_.resize(leaves_, kGone);
-    node_.resize(leaves_);  // node_[1] is the root, node_[0] unused
-    for (std::size_t at = leaves_ - 1; at >= 1; --at) node_[at] = better(child(2 * at), child(2 * at + 1));
+  static constexpr std::uint32_t kGone = std::numeric_limits<std::uint32_t>::max();
+
+  explicit WeightHeap(const std::vector<double>& weights) : heap_(weights.size()), position_(weights.size()) {
+    for (std::size_t k = 0; k < weights.size(); ++k) {
+      heap_[k] = {weights[k], static_cast<std::uint32_t>(k)};
+      position_[k] = static_cast<std::uint32_t>(k);
+    }
+    for (std::size_t at = heap_.size() / 2; at-- > 0;) sift_down(at);
   }
 
-  bool contains(std::uint32_t k) const { return weights_[k] != kGone; }
+  bool contains(std::uint32_t k) const { return position_[k] != kGone; }
 
   std::uint32_t pop() {
-    const std::uint32_t top = node_[1];
-    weights_[top] = kGone;
-    replay(top);
+    const std::uint32_t top = heap_[0].index;
+    position_[top] = kGone;
+    heap_[0] = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) {
+      position_[heap_[0].index] = 0;
+      sift_down(0);
+    }
     return top;
   }
 
   /// Lowers k's weight by `amount` >= 0.
   void decrease(std::uint32_t k, double amount) {
-    weights_[k] -= amount;
-    replay(k);
+    const std::size_t at = position_[k];
+    heap_[at].weight -= amount;
+    sift_down(at);
   }
 
  private:
-  static constexpr double kGone = -std::numeric_limits<double>::infinity();
+  struct Entry {
+    double weight;
+    std::uint32_t index;
+  };
+  static bool above(const Entry& a, const Entry& b) {
+    return a.weight > b.weight || (a.weight == b.weight && a.index < b.index);
+  }
+  void sift_down(std::size_t at) {
+    const Entry moving = heap_[at];
+    const std::size_t n = heap_.size();
+    while (true) {
+      std::size_t child = 2 * at + 1;
+      if (child >= n) break;
+      if (child + 1 < n && above(heap_[child + 1], heap_[child])) ++child;
+      if (!above(heap_[child], moving)) break;
+      heap_[at] = heap_[child];
+      position_[heap_[at].index] = static_cast<std::uint32_t>(at);
+      at = child;
+    }
+    heap_[at] = moving;
+    position_[moving.index] = static_cast<std::uint32_t>(at);
+  }
 
-  std::uint32_t child(std::size_t at) const {
-    return at >= leaves_ ? static_cast<std::uint32_t>(at - leaves_) : node_[at];
-  }
-  std::uint32_t better(std::uint32_t a, std::uint32_t b) const {
-    return weights_[a] > weights_[b] || (weights_[a] == weights_[b] && a < b) ? a : b;
-  }
-  // k got lighter: the nodes it won are the lowest ones on its path.
-  void replay(std::uint32_t k) {
-    for (std::size_t at = (leaves_ + k) / 2; at >= 1 && node_[at] == k; at /= 2)
-      node_[at] = better(child(2 * at), child(2 * at + 1));
-  }
-
-  std::vector<double> weights_;
-  std::size_t leaves_ = 2;
-  std::vector<std::uint32_t> node_;
+  std::vector<Entry> heap_;
+  std::vector<std::uint32_t> position_;
 };
 
 // One round: eliminates `points` down to `keep`. Returns indices into
@@ -237,22 +246,22 @@ std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std
     index.for_each_near(k, [&](std::uint32_t, double d2) { sum += weight(d2); });
     weights[k] = sum;
   }
-  WinnerTree queue(std::move(weights));
+  WeightHeap heap(weights);
   std::vector<std::uint32_t> eliminated;  // sorted positions, in elimination order
   eliminated.reserve(n - keep);
   for (std::size_t left = n; left > keep; --left) {
-    const std::uint32_t gone = queue.pop();
+    const std::uint32_t gone = heap.pop();
     eliminated.push_back(gone);
     // The pair's weight is evaluated from the neighbour's side, as when it
     // was added (distance2 is symmetric, so the terms cancel exactly anyway).
     index.for_each_near(gone, [&](std::uint32_t k, double d2) {
-      if (queue.contains(k)) queue.decrease(k, weight(d2));
+      if (heap.contains(k)) heap.decrease(k, weight(d2));
     });
   }
   std::vector<std::uint32_t> order;
   order.reserve(n);
   for (std::uint32_t k = 0; k < n; ++k)
-    if (queue.contains(k)) order.push_back(k);
+    if (heap.contains(k)) order.push_back(k);
   // Survivors in input order, then the eliminated, the last eliminated first.
   for (std::uint32_t& k : order) k = index.original(k);
   std::sort(order.begin(), order.end());
