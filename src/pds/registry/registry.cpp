@@ -103,10 +103,39 @@ double GenerateRequest::param(const std::string& name, double fallback) const {
 
 namespace {
 
+// A radius field, a mask, fixed points: only where the method takes them,
+// and sized by the field's range or a radius, never by a count.
+void validate_constraints(const Method& m, const GenerateRequest& r) {
+  const RequestConstraints& c = r.constraints;
+  if (!c.active()) return;
+  if (!m.constraints) {
+    std::string takers;
+    for (const Method& t : methods())
+      if (t.constraints) takers += (takers.empty() ? "" : ", ") + t.name;
+    throw InvalidArgument(m.name + " does not take a density, a mask or fixed points (" + takers + " do)");
+  }
+  if (c.fixed.size() > 0 && c.fixed.dim != r.dim)
+    throw InvalidArgument("fixed points have dimension " + std::to_string(c.fixed.dim) + ", the request " +
+                          std::to_string(r.dim));
+  if (r.count) throw InvalidArgument(m.name + ": --count is not taken with a density, a mask or fixed points (size by the radius)");
+  if (!c.radius) return;
+  if (r.radius) throw InvalidArgument(m.name + ": a density takes a radius range, not --radius");
+  require_radius(c.rmin, "rmin");
+  require_radius(c.rmax, "rmax");
+  if (!(c.rmin <= c.rmax))
+    throw InvalidArgument("radius range needs rmin <= rmax, got " + detail::format_number(c.rmin) + " > " +
+                          detail::format_number(c.rmax));
+  visit_dim<kMinDim, kMaxDim>(r.dim, [&](auto d) {
+    require_radius_budget(r.domain<decltype(d)::value>(), c.rmin, r.max_points);
+    return 0;
+  });
+}
+
 void validate(const Method& m, const GenerateRequest& r) {
   if (!m.dims.contains(r.dim))
     throw InvalidArgument(m.name + ": dimension " + std::to_string(r.dim) + " is not supported (supported: " +
                           m.dims.text() + ")");
+  validate_constraints(m, r);
   if (r.dim > kMaxDim) {
     // Run-time dimensions: sequences and designs, which take a count only.
     std::vector<double> lo, hi;
@@ -145,7 +174,7 @@ void validate(const Method& m, const GenerateRequest& r) {
     require_point_budget(static_cast<double>(*r.count), r.dim, r.max_points,
                          "count " + std::to_string(*r.count) + " in dimension " + std::to_string(r.dim), 2.0);
   }
-  if (!r.count && !r.radius) {
+  if (!r.count && !r.radius && !r.constraints.radius) {
     if (m.takes_count && m.takes_radius) throw InvalidArgument(m.name + " needs --count or --radius");
     throw InvalidArgument(m.name + (m.takes_count ? " needs --count" : " needs --radius"));
   }
