@@ -1,9 +1,11 @@
 // pds generate METHOD ...: run a registered method and write the points.
 
+#include <iostream>
 #include <memory>
 
 #include "analysis_common.h"
 #include "commands.h"
+#include "constraints.h"
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/registry.h"
@@ -16,6 +18,7 @@ struct GenerateOptions {
   GenerationOptions generation;
   std::string output = "-";
   std::string dtype = "float64";
+  ConstraintOptions constraints;
 };
 
 }  // namespace
@@ -31,11 +34,16 @@ void add_generate(CLI::App& app) {
   cmd->add_option("--dtype", opt->dtype, "Element type of .npy output")
       ->check(CLI::IsMember({"float64", "float32"}))
       ->capture_default_str();
+  add_constraint_options(*cmd, opt->constraints);
 
   cmd->callback([opt] {
-    const GenerateRequest request = generation_request(opt->generation);
+    GenerateRequest request = generation_request(opt->generation);
+    apply_constraint_options(opt->constraints, request);
     const PointCloud points = generate(opt->method, request);
     write_points(opt->output, points, opt->dtype == "float32" ? NpyType::Float32 : NpyType::Float64);
+    if (const std::size_t fixed = request.constraints.fixed.size())
+      std::cerr << "pds: the first " << fixed << " of " << points.size() << " points are the fixed ones of "
+                << opt->constraints.fixed << "\n";
   });
 }
 
