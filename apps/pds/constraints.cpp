@@ -52,7 +52,8 @@ struct ImageOnBounds {
 
 void require_plane(const GenerateRequest& request, const char* option) {
   if (request.dim != 2)
-    throw InvalidArgument(std::string(option) + " needs --dim 2 (an image or polygons cover the plane), got dimension " +
+    throw InvalidArgument(std::string(option) +
+                          " needs --dim 2 (an image or polygons cover the plane), got dimension " +
                           std::to_string(request.dim));
 }
 
@@ -73,7 +74,8 @@ void add_constraint_options(CLI::App& command, ConstraintOptions& o) {
 void apply_constraint_options(const ConstraintOptions& o, GenerateRequest& request) {
   RequestConstraints& c = request.constraints;
   if (o.density.empty() != o.radius_range.empty())
-    throw InvalidArgument(o.density.empty() ? "--radius-range needs --density" : "--density needs --radius-range rmin,rmax");
+    throw InvalidArgument(o.density.empty() ? "--radius-range needs --density"
+                                            : "--density needs --radius-range rmin,rmax");
   if (o.invert && o.density.empty()) throw InvalidArgument("--invert needs --density");
   std::vector<double> lo, hi;
   if (!o.density.empty() || !o.mask.empty() || !o.polygons.empty()) {

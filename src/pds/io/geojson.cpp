@@ -12,9 +12,7 @@ namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void fail(const std::string& name, const std::string& what) {
-  throw InvalidArgument(name + ": " + what);
-}
+[[noreturn]] void fail(const std::string& name, const std::string& what) { throw InvalidArgument(name + ": " + what); }
 
 Ring read_ring(const json& j, const std::string& name) {
   if (!j.is_array()) fail(name, "a ring is not an array of positions");
@@ -36,7 +34,8 @@ Polygon read_polygon(const json& j, const std::string& name) {
 
 void read_object(const json& j, const std::string& name, Region& region, int depth) {
   if (depth > 16) fail(name, "collections nested too deeply");
-  if (!j.is_object() || !j.contains("type") || !j["type"].is_string()) fail(name, "expected a GeoJSON object with a \"type\"");
+  if (!j.is_object() || !j.contains("type") || !j["type"].is_string())
+    fail(name, "expected a GeoJSON object with a \"type\"");
   const std::string type = j["type"].get<std::string>();
   const auto member = [&](const char* key) -> const json& {
     if (!j.contains(key)) fail(name, type + " without \"" + key + "\"");

@@ -52,8 +52,7 @@ TEST(GeoJson, BadFilesSayWhatIsWrong) {
   EXPECT_EQ(message(R"({"type": "Polygon"})"), "t.geojson: Polygon without \"coordinates\"");
   EXPECT_NE(message(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, "a"], [0, 1]]]})").find("position"),
             std::string::npos);
-  EXPECT_NE(message(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0]]]})").find("2 vertices"),
-            std::string::npos);
+  EXPECT_NE(message(R"({"type": "Polygon", "coordinates": [[[0, 0], [1, 0]]]})").find("2 vertices"), std::string::npos);
   EXPECT_EQ(message(R"({"type": "FeatureCollection", "features": []})"), "t.geojson: no polygon");
   EXPECT_EQ(message("[1, 2]"), "t.geojson: expected a GeoJSON object with a \"type\"");
   EXPECT_THROW(read_geojson("/nonexistent/x.geojson"), InvalidArgument);

@@ -117,7 +117,9 @@ void validate_constraints(const Method& m, const GenerateRequest& r) {
   if (c.fixed.size() > 0 && c.fixed.dim != r.dim)
     throw InvalidArgument("fixed points have dimension " + std::to_string(c.fixed.dim) + ", the request " +
                           std::to_string(r.dim));
-  if (r.count) throw InvalidArgument(m.name + ": --count is not taken with a density, a mask or fixed points (size by the radius)");
+  if (r.count)
+    throw InvalidArgument(m.name +
+                          ": --count is not taken with a density, a mask or fixed points (size by the radius)");
   if (!c.radius) return;
   if (r.radius) throw InvalidArgument(m.name + ": a density takes a radius range, not --radius");
   require_radius(c.rmin, "rmin");

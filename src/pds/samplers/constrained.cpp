@@ -109,7 +109,8 @@ class ConstrainedSet {
     require_radius(constraints_.rmax, "rmax");
     if (!(constraints_.rmin <= constraints_.rmax))
       throw InvalidArgument(std::string(method) + ": radius range needs rmin <= rmax, got " +
-                            detail::format_number(constraints_.rmin) + " > " + detail::format_number(constraints_.rmax));
+                            detail::format_number(constraints_.rmin) + " > " +
+                            detail::format_number(constraints_.rmax));
   }
 
   void add(const Point<D>& x, double r) {
@@ -146,8 +147,9 @@ Point<D> shell_offset(Rng& rng, double r) {
 
 void refuse_count(const char* method, const std::optional<std::uint64_t>& count) {
   if (count)
-    throw InvalidArgument(std::string(method) +
-                          ": a count is not taken with a radius field, a mask or fixed points; the radius sizes the set");
+    throw InvalidArgument(
+        std::string(method) +
+        ": a count is not taken with a radius field, a mask or fixed points; the radius sizes the set");
 }
 
 }  // namespace
@@ -214,9 +216,9 @@ PointSet<D> dart_throwing(const DartThrowingParams& params, const SamplingConstr
   return set.take();
 }
 
-#define PDS_INSTANTIATE(D)                                                                                       \
-  template PointSet<D> bridson<D>(const BridsonParams&, const SamplingConstraints<D>&, const Domain<D>&,         \
-                                  std::uint64_t);                                                                \
+#define PDS_INSTANTIATE(D)                                                                                          \
+  template PointSet<D> bridson<D>(const BridsonParams&, const SamplingConstraints<D>&, const Domain<D>&,            \
+                                  std::uint64_t);                                                                   \
   template PointSet<D> dart_throwing<D>(const DartThrowingParams&, const SamplingConstraints<D>&, const Domain<D>&, \
                                         std::uint64_t);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)

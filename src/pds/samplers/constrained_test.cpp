@@ -100,38 +100,56 @@ TEST(Constrained, PairRuleHoldsAcrossAStepAndIn3D) {
     }
 }
 
+// Stores `stored` points with radii log-uniform over [rmin, rmax]
+// (conflicting among themselves too), then asks about `queries` others with
+// radii drawn the same way: the index must agree with brute force. Returns
+// how many queries conflict.
+template <int D>
+int expect_index_matches_brute_force(const Domain<D>& domain, double rmin, double rmax, int stored_count, int queries,
+                                     int expected_levels) {
+  detail::RadiusLevels<D> index(domain, rmin, rmax);
+  EXPECT_EQ(index.levels(), expected_levels);
+  Rng rng(17);
+  PointSet<D> stored;
+  std::vector<double> radii;
+  const auto radius = [&] { return rmin * std::pow(rmax / rmin, rng.uniform()); };
+  for (int i = 0; i < stored_count; ++i) {
+    stored.push_back(uniform_point(rng, domain));
+    radii.push_back(radius());
+    index.insert(stored.back(), radii.back());
+  }
+  int conflicts = 0;
+  for (int q = 0; q < queries; ++q) {
+    const Point<D> x = uniform_point(rng, domain);
+    const double r = radius();
+    bool brute = false;
+    for (std::size_t i = 0; i < stored.size(); ++i) {
+      const double m = std::max(r, radii[i]);
+      brute = brute || domain.distance2(x, stored[i]) < m * m;
+    }
+    EXPECT_EQ(index.conflicts(x, r), brute) << x << " r " << r;
+    if (index.conflicts(x, r) != brute) break;
+    conflicts += brute;
+  }
+  return conflicts;
+}
+
 TEST(Constrained, LevelIndexFindsEveryConflict) {
-  // Points with radii spread over [rmin, rmax] (conflicting among themselves
-  // too), queried with other radii: the index agrees with brute force.
   for (bool torus : {false, true}) {
-    const Domain<2> domain{{-1, 0}, {0.5, 1}, torus};
-    const double rmin = 0.002, rmax = 0.12;
-    detail::RadiusLevels<2> index(domain, rmin, rmax);
-    Rng rng(17);
-    PointSet<2> stored;
-    std::vector<double> radii;
-    const auto radius = [&] { return rmin * std::pow(rmax / rmin, rng.uniform()); };
-    for (int i = 0; i < 150; ++i) {
-      stored.push_back(uniform_point(rng, domain));
-      radii.push_back(radius());
-      index.insert(stored.back(), radii.back());
-    }
-    EXPECT_EQ(index.levels(), 6);
-    int conflicts = 0;
-    for (int q = 0; q < 3000; ++q) {
-      const Point<2> x = uniform_point(rng, domain);
-      const double r = radius();
-      bool brute = false;
-      for (std::size_t i = 0; i < stored.size(); ++i) {
-        const double m = std::max(r, radii[i]);
-        brute = brute || domain.distance2(x, stored[i]) < m * m;
-      }
-      ASSERT_EQ(index.conflicts(x, r), brute) << x << " r " << r;
-      conflicts += brute;
-    }
+    // A ratio of 60 in steps of sqrt(2): 12 levels.
+    const int conflicts =
+        expect_index_matches_brute_force(Domain<2>{{-1, 0}, {0.5, 1}, torus}, 0.002, 0.12, 150, 3000, 12);
     EXPECT_GT(conflicts, 300);  // both answers are exercised
     EXPECT_LT(conflicts, 2700);
   }
+  expect_index_matches_brute_force(Domain<3>::unit(true), 0.01, 0.2, 300, 2000, 9);
+}
+
+TEST(Constrained, LevelIndexBeyondItsLastLevel) {
+  // A ratio of 10^6 in 1D: more than the 32 levels cover, so the last level
+  // holds radii from about 46,000 rmin to rmax; still exact.
+  const int conflicts = expect_index_matches_brute_force(Domain<1>::unit(true), 1e-6, 1.0, 200, 2000, 32);
+  EXPECT_GT(conflicts, 200);
 }
 
 // Counts in vertical strips follow the integral of 1/r^2 over the strip:
@@ -190,7 +208,6 @@ TEST(Constrained, MaskIsRespectedAndEveryIslandFilled) {
   };
   const double r = 0.02;
   for (Method m : {Method::bridson, Method::darts}) {
-    DartThrowingParams dp;
     const Domain<2> domain = Domain<2>::unit(false);
     const PointSet<2> points = run(m, c, domain, 9, r);
     expect_pair_rule(points, c, domain, r);

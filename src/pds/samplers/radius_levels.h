@@ -5,16 +5,18 @@
 //
 // One grid over [rmin, rmax] would cost in proportion to (rmax/rmin)^D cells
 // a query (cells sized by rmin, a search out to rmax). Instead points are
-// stored by radius level: level l holds radii in [rmin 2^l, rmin 2^(l+1)),
-// in a pds::Grid whose cell edge min(2^(l+1) rmin, rmax) is at least every radius it
-// holds, so the points at a level that can conflict with x lie in the block
-// of cells around x (3 per axis when r is at most the edge). A query at level
-// L searches the levels >= L out to max(r, the largest radius stored there),
-// and the finer levels, whose radii are below r, out to r: those are
-// usually far from x (a sparse sample in a dense region is rare in a smooth
-// field), so each level >= 1 also counts, per cell, the points of the levels
-// below it, and the finer levels are read only when a cell around x holds
-// some. Every conflict is found (a test compares with brute force); only the
+// stored by radius level: level l holds radii in [rmin q^l, rmin q^(l+1)),
+// q = sqrt(2), in a pds::Grid whose cell edge min(q^(l+1) rmin, rmax) is at
+// least every radius it holds, so the points of a level that can conflict
+// with x lie in the block of cells around x (3 per axis when the reach is at
+// most the edge). Most levels hold nothing near x (in a smooth field one or
+// two levels meet anywhere), so every cell of every level keeps a bit per
+// other level that may hold a conflicting point: an insert at level l sets
+// bit l in the cells of each other level from which a query could conflict
+// with it (within the point's radius for the finer levels, whose queries'
+// radii are smaller; within the level's largest radius for the coarser
+// ones). A query searches its own level and the levels flagged in its own
+// cell. Every conflict is found (a test compares with brute force); only the
 // work depends on the field.
 
 #include <algorithm>
@@ -30,15 +32,18 @@ namespace pds::detail {
 template <int D>
 class RadiusLevels {
  public:
-  /// Radii outside [rmin, rmax] are accepted (they land in the end levels)
-  /// and still handled exactly, only slower.
-  RadiusLevels(const Domain<D>& domain, double rmin, double rmax) : rmin_(rmin) {
-    int levels = 1;
-    while (levels < kMaxLevels && rmin * static_cast<double>(std::uint64_t{1} << levels) <= rmax) ++levels;
+  /// Radii must lie in [rmin, rmax] (the samplers clamp them).
+  RadiusLevels(const Domain<D>& domain, double rmin, double rmax) {
+    // Level l starts at rmin q^l; the last starts at or below rmax and ends
+    // at rmax.
+    starts_.push_back(rmin);
+    while (static_cast<int>(starts_.size()) < kMaxLevels && starts_.back() * kLevelRatio <= rmax)
+      starts_.push_back(starts_.back() * kLevelRatio);
+    const int levels = static_cast<int>(starts_.size());
     for (int l = 0; l < levels; ++l) {
-      const double edge = std::min(rmax, rmin * static_cast<double>(std::uint64_t{2} << l));
-      levels_.push_back(Level{Grid<D>(domain, edge), {}, 0.0, {}});
-      if (l > 0) levels_.back().below.assign(levels_.back().grid.cell_count(), 0);
+      const double edge = l + 1 < levels ? starts_[static_cast<std::size_t>(l) + 1] : rmax;
+      levels_.push_back(Level{Grid<D>(domain, edge), edge, {}, 0.0, {}});
+      if (levels > 1) levels_.back().others.assign(levels_.back().grid.cell_count(), 0);
     }
   }
 
@@ -46,22 +51,22 @@ class RadiusLevels {
   bool conflicts(const Point<D>& x, double r) const {
     const int own = level_of(r);
     const double r2 = r * r;
-    const auto closer = [&](const Level& level, double reach) {
+    const auto search = [&](int l) {
+      const Level& level = levels_[static_cast<std::size_t>(l)];
+      if (level.radii.empty()) return false;
+      // Finer levels hold radii below r: out to r; the others out to their largest.
+      const double reach = l < own ? r : std::max(r, level.max_radius);
       return !level.grid.for_each_within(x, reach, [&](std::int32_t i, double d2) {
         const double rq = level.radii[static_cast<std::size_t>(i)];
         return !(d2 < std::max(r2, rq * rq));
       });
     };
-    for (int l = own; l < levels(); ++l) {
-      const Level& level = levels_[static_cast<std::size_t>(l)];
-      if (!level.radii.empty() && closer(level, std::max(r, level.max_radius))) return true;
-    }
-    if (own == 0) return false;
+    if (search(own)) return true;
+    if (levels() == 1) return false;
     const Level& mine = levels_[static_cast<std::size_t>(own)];
-    const bool finer_near = !mine.grid.for_each_cell_near(x, r, [&](std::size_t cell) { return mine.below[cell] == 0; });
-    if (!finer_near) return false;
-    for (int l = 0; l < own; ++l)
-      if (closer(levels_[static_cast<std::size_t>(l)], r)) return true;
+    std::uint32_t flagged = mine.others[mine.grid.cell_of(x)];
+    for (int l = 0; flagged; ++l, flagged >>= 1)
+      if ((flagged & 1) && search(l)) return true;
     return false;
   }
 
@@ -72,32 +77,44 @@ class RadiusLevels {
     level.grid.insert(x);
     level.radii.push_back(r);
     level.max_radius = std::max(level.max_radius, r);
-    for (int l = own + 1; l < levels(); ++l) {
-      Level& coarser = levels_[static_cast<std::size_t>(l)];
-      ++coarser.below[coarser.grid.cell_of(x)];
+    const std::uint32_t bit = std::uint32_t{1} << own;
+    for (int l = 0; l < levels(); ++l) {
+      if (l == own) continue;
+      Level& other = levels_[static_cast<std::size_t>(l)];
+      // A query at a finer level conflicts within r; at a coarser one, within
+      // its own radius, at most that level's edge.
+      other.grid.for_each_cell_near(x, l < own ? r : other.edge, [&](std::size_t cell) {
+        other.others[cell] |= bit;
+        return true;
+      });
     }
   }
 
   int levels() const { return static_cast<int>(levels_.size()); }
 
  private:
-  // 2^40 covers any radius ratio a grid at rmin can hold in memory.
-  static constexpr int kMaxLevels = 40;
+  // Radii grow by sqrt(2) a level: a cell is at most sqrt(2) times the
+  // smallest radius it holds, so a query's 3^D block holds few points. 32
+  // levels (a ratio of 2^15.5, about 46,000) fit Level::others's 32 bits
+  // (64 bits measured ~7% slower: more memory per cell); larger radii share
+  // the last level, still exactly, only slower.
+  static constexpr double kLevelRatio = 1.4142135623730951;
+  static constexpr int kMaxLevels = 32;
 
   struct Level {
     Grid<D> grid;
-    std::vector<double> radii;  // by the grid's point index
-    double max_radius;
-    std::vector<std::uint32_t> below;  // points of finer levels, per cell (levels >= 1)
+    double edge;                        // the largest radius the level holds
+    std::vector<double> radii;          // by the grid's point index
+    double max_radius;                  // the largest stored
+    std::vector<std::uint32_t> others;  // per cell: a bit per other level that may conflict here
   };
 
   int level_of(double r) const {
-    int l = 0;
-    while (l + 1 < levels() && r >= rmin_ * static_cast<double>(std::uint64_t{2} << l)) ++l;
-    return l;
+    const auto after = std::upper_bound(starts_.begin(), starts_.end(), r);
+    return std::max(0, static_cast<int>(after - starts_.begin()) - 1);
   }
 
-  double rmin_;
+  std::vector<double> starts_;  // the smallest radius of each level
   std::vector<Level> levels_;
 };
 
