@@ -6,7 +6,7 @@
                 grayscale image for stippling, made here so nothing is shipped)
   mask.png      a ring and a bar, dark where samples go
   region.geojson  a polygon with a hole and a second polygon
-  fixed.csv     points to keep: a small circle of anchors
+  fixed.csv     points to keep: a circle and a diagonal of points 0.025 apart
 
 Usage: scripts/density_inputs.py OUTDIR. Standard library only (PNG by zlib).
 """
@@ -48,7 +48,7 @@ def gradient(x, y, size=256):
 
 def face(x, y, size=256):
     u, v = x / size - 0.5, y / size - 0.5  # v grows downward
-    tone = 0.92 - 0.25 * smoothstep(0.0, 0.7, math.hypot(u, v + 0.1))  # a lit background
+    tone = 0.97 - 0.2 * smoothstep(0.0, 0.7, math.hypot(u, v + 0.1))  # a lit background
     head = math.hypot(u / 0.33, (v + 0.02) / 0.42)
     if head < 1.0:
         # A lit sphere: light from the upper left.
@@ -92,11 +92,14 @@ def main():
                 '   [[0.2, 0.3], [0.4, 0.3], [0.35, 0.7], [0.2, 0.65], [0.2, 0.3]]],\n'
                 '  [[[0.7, 0.2], [0.95, 0.5], [0.7, 0.8], [0.7, 0.2]]]]}\n')
     with open(os.path.join(out, "fixed.csv"), "w") as f:
+        # A circle and a diagonal of points 0.025 apart: rows no random set
+        # draws, so the picture shows which points were fixed.
         f.write("x,y\n")
+        for i in range(75):
+            a = 2 * math.pi * i / 75
+            f.write("%.6f,%.6f\n" % (0.55 + 0.3 * math.cos(a), 0.55 + 0.3 * math.sin(a)))
         for i in range(12):
-            a = 2 * math.pi * i / 12
-            f.write("%.6f,%.6f\n" % (0.5 + 0.3 * math.cos(a), 0.5 + 0.3 * math.sin(a)))
-        f.write("0.5,0.5\n")
+            f.write("%.6f,%.6f\n" % (0.05 + 0.0177 * i, 0.05 + 0.0177 * i))
 
 
 if __name__ == "__main__":

@@ -40,9 +40,10 @@ outside=$(awk -F, 'NR > 1 && ($1 < 0.2 || $1 > 0.8 || $2 < 0.2 || $2 > 0.8 || ($
 
 # Fixed points: the first rows of the output, reported on stderr.
 expect_exit 0 "" -- generate bridson --fixed "$in/fixed.csv" --radius 0.05 -o "$tmp/f.csv"
-[[ "$(head -14 "$tmp/f.csv" | tail -13 | awk -F, '{printf "%.6f,%.6f\n", $1, $2}')" == "$(tail -13 "$in/fixed.csv" | awk -F, '{printf "%.6f,%.6f\n", $1, $2}')" ]] \
+nfixed=$(($(wc -l <"$in/fixed.csv") - 1))
+[[ "$(head -$((nfixed + 1)) "$tmp/f.csv" | tail -$nfixed | awk -F, '{printf "%.6f,%.6f\n", $1, $2}')" == "$(tail -$nfixed "$in/fixed.csv" | awk -F, '{printf "%.6f,%.6f\n", $1, $2}')" ]] \
   && ok || bad "fixed points are not the first rows"
-grep -q "the first 13 of" "$tmp/err" && ok || bad "fixed: no report on stderr: $(cat "$tmp/err")"
+grep -q "the first $nfixed of" "$tmp/err" && ok || bad "fixed: no report on stderr: $(cat "$tmp/err")"
 
 # Bad files and bad combinations: exit 2, one line.
 echo "not a png" >"$tmp/bad.png"
