@@ -53,6 +53,9 @@ const Method& dart_throwing_method() {
               params.all_pairs = r.param("all-pairs", 0) != 0;
               params.max_failures = static_cast<std::uint64_t>(r.param("failures", 0));
               if (r.constraints.active()) {
+                if (params.all_pairs)
+                  throw InvalidArgument(
+                      "dart-throwing: all-pairs=1 is not taken with a density, a mask or fixed points");
                 params.radius = r.radius.value_or(0.0);
                 return dart_throwing(params, r.constraints.typed(domain), domain, r.seed);
               }
