@@ -11,44 +11,15 @@
 #include "pds/error.h"
 #include "pds/io/geojson.h"
 #include "pds/io/point_file.h"
+#include "pds/render/image_field.h"
 #include "pds/render/png.h"
 
 namespace pds::cli {
 namespace {
 
-// A grey image laid over the plane's bounds, its top row at the upper y bound
-// (as the point plots draw it).
-struct ImageOnBounds {
-  std::shared_ptr<const Image> image;
-  double x0, y1, sx, sy;  // pixels per unit along x and (downward) y
-
-  ImageOnBounds(const std::string& path, const std::vector<double>& lo, const std::vector<double>& hi)
-      : image(std::make_shared<const Image>(read_png(path))),
-        x0(lo[0]),
-        y1(hi[1]),
-        sx(image->width / (hi[0] - lo[0])),
-        sy(image->height / (hi[1] - lo[1])) {}
-
-  // The pixel under x.
-  double nearest(const double* x) const {
-    const int px = std::clamp(static_cast<int>(std::floor((x[0] - x0) * sx)), 0, image->width - 1);
-    const int py = std::clamp(static_cast<int>(std::floor((y1 - x[1]) * sy)), 0, image->height - 1);
-    return image->at(px, py);
-  }
-
-  // Bilinear between pixel centres, constant beyond the outer ones.
-  double smooth(const double* x) const {
-    const double u = std::clamp((x[0] - x0) * sx - 0.5, 0.0, image->width - 1.0);
-    const double v = std::clamp((y1 - x[1]) * sy - 0.5, 0.0, image->height - 1.0);
-    const int i = std::max(0, std::min(static_cast<int>(u), image->width - 2));
-    const int j = std::max(0, std::min(static_cast<int>(v), image->height - 2));
-    const int i1 = std::min(i + 1, image->width - 1), j1 = std::min(j + 1, image->height - 1);
-    const double fu = u - i, fv = v - j;
-    const double top = image->at(i, j) * (1 - fu) + image->at(i1, j) * fu;
-    const double bottom = image->at(i, j1) * (1 - fu) + image->at(i1, j1) * fu;
-    return top * (1 - fv) + bottom * fv;
-  }
-};
+ImageOnBounds image_on_bounds(const std::string& path, const std::vector<double>& lo, const std::vector<double>& hi) {
+  return ImageOnBounds(read_png(path), Point<2>{{lo[0], lo[1]}}, Point<2>{{hi[0], hi[1]}});
+}
 
 void require_plane(const GenerateRequest& request, const char* option) {
   if (request.dim != 2)
@@ -89,22 +60,16 @@ void apply_constraint_options(const ConstraintOptions& o, GenerateRequest& reque
     if (!(rmin <= rmax))
       throw InvalidArgument("--radius-range needs rmin <= rmax, got " + detail::format_number(rmin) + "," +
                             detail::format_number(rmax));
-    // Darkness t in [0, 1] sets the density 1/r^2 linearly between white's
-    // 1/rmax^2 and black's 1/rmin^2, so a stippling's tone follows the image.
-    const ImageOnBounds image(o.density, lo, hi);
-    const double light = 1.0 / (rmax * rmax), dark = 1.0 / (rmin * rmin);
+    const auto field = radius_from_image(image_on_bounds(o.density, lo, hi), rmin, rmax, o.invert);
     c.rmin = rmin;
     c.rmax = rmax;
-    c.radius = [image, light, dark, invert = o.invert](const double* x) {
-      const double grey = image.smooth(x);
-      const double t = invert ? grey : 1.0 - grey;
-      return 1.0 / std::sqrt(light + t * (dark - light));
-    };
+    c.radius = [field](const double* x) { return field(Point<2>{{x[0], x[1]}}); };
   }
   std::function<bool(const double*)> mask, region;
   if (!o.mask.empty()) {
-    const ImageOnBounds image(o.mask, lo, hi);
-    mask = [image](const double* x) { return image.nearest(x) < 0.5; };
+    mask = [on = mask_from_image(image_on_bounds(o.mask, lo, hi))](const double* x) {
+      return on(Point<2>{{x[0], x[1]}});
+    };
   }
   if (!o.polygons.empty()) {
     auto polygons = std::make_shared<const Region>(read_geojson(o.polygons));
