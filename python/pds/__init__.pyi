@@ -21,6 +21,11 @@ def generate(
     seed: int = ...,
     threads: int = ...,
     max_points: int = ...,
+    density: npt.ArrayLike | None = ...,
+    radius_range: tuple[float, float] | None = ...,
+    invert: bool = ...,
+    mask: npt.ArrayLike | None = ...,
+    fixed: npt.ArrayLike | None = ...,
     **params: float,
 ) -> npt.NDArray[np.float64]: ...
 def tile(
