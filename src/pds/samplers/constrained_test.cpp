@@ -134,6 +134,28 @@ int expect_index_matches_brute_force(const Domain<D>& domain, double rmin, doubl
   return conflicts;
 }
 
+TEST(Constrained, PairRuleHoldsIn1DAnd5D) {
+  SamplingConstraints<1> line;
+  line.rmin = 0.001;
+  line.rmax = 0.02;
+  line.radius = [](const Point<1>& x) { return 0.001 + 0.019 * x[0] * x[0]; };
+  SamplingConstraints<5> space;
+  space.rmin = 0.25;
+  space.rmax = 0.5;
+  space.radius = [](const Point<5>& x) { return 0.25 + 0.25 * x[4]; };
+  for (Method m : {Method::bridson, Method::darts})
+    for (bool torus : {false, true}) {
+      const Domain<1> d1 = Domain<1>::unit(torus);
+      const PointSet<1> p1 = run(m, line, d1, 6);
+      ASSERT_GT(p1.size(), 100u);
+      expect_pair_rule(p1, line, d1);
+      const Domain<5> d5 = Domain<5>::unit(torus);
+      const PointSet<5> p5 = run(m, space, d5, 6);
+      ASSERT_GT(p5.size(), 50u);
+      expect_pair_rule(p5, space, d5);
+    }
+}
+
 TEST(Constrained, LevelIndexFindsEveryConflict) {
   for (bool torus : {false, true}) {
     // A ratio of 60 in steps of sqrt(2): 12 levels.
