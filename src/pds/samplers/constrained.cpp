@@ -15,10 +15,12 @@
 // d2 < max(r_a, r_b)^2 with d2 from Domain::distance2, the arithmetic the
 // tests' all-pairs oracle uses.
 //
-// Complexity: a query reads about 3^D cells per radius level at or above
-// its own (levels double the radius: log2(rmax/rmin) + 1 of them) plus
-// 3^D counters; finer levels only where a finer sample is near. Memory: the
-// level grids, the finest with cells of edge 2 rmin.
+// Complexity: a query reads about 3^D cells of its own radius level, and as
+// many of each other level flagged in its cell (levels a factor sqrt(2)
+// apart: 2 log2(rmax/rmin) + 1 of them; in a smooth field a query searches
+// one level); an insert flags the cells of the other levels around it.
+// Memory: the level grids with a 32-bit mask a cell, the finest with cells
+// of edge sqrt(2) rmin. Measured: docs/benchmarks.md, "Variable density".
 //
 // Limits: not maximal (Bridson's k candidates and dart throwing's failure
 // bound both stop short); the candidate shell is drawn by rejection from a
