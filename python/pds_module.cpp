@@ -156,10 +156,11 @@ py::array_t<double> run_request(const std::string& method, const pds::GenerateRe
 py::array_t<double> generate(const std::string& method, std::optional<std::uint64_t> count,
                              std::optional<double> radius, int dim, std::vector<double> lo, std::vector<double> hi,
                              bool torus, std::uint64_t seed, int threads, std::uint64_t max_points,
-                             std::map<std::string, double> params, bool sized) {
-  return run_request(
-      method, make_request(count, radius, dim, std::move(lo), std::move(hi), torus, seed, threads, max_points, params),
-      sized);
+                             std::map<std::string, double> params, bool sized, bool float32) {
+  pds::GenerateRequest request =
+      make_request(count, radius, dim, std::move(lo), std::move(hi), torus, seed, threads, max_points, params);
+  request.float32 = float32;
+  return run_request(method, request, sized);
 }
 
 #ifdef PDS_WITH_RENDER
@@ -373,7 +374,7 @@ PYBIND11_MODULE(_pds, m) {
   m.doc() = "The compiled half of the pds package; use the functions of `pds` itself.";
   m.def("generate", &generate, py::arg("method"), py::arg("count"), py::arg("radius"), py::arg("dim"), py::arg("lo"),
         py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"), py::arg("params"),
-        py::arg("sized"));
+        py::arg("sized"), py::arg("float32") = false);
 #ifdef PDS_WITH_RENDER
   m.def("generate_constrained", &generate_constrained, py::arg("method"), py::arg("radius"), py::arg("dim"),
         py::arg("lo"), py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"),

@@ -1,6 +1,8 @@
 #include "analysis_common.h"
 
+#include <cctype>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 
 #include "pds/error.h"
@@ -44,6 +46,11 @@ void add_generation_options(CLI::App& command, GenerationOptions& o, const Gener
   o.added.push_back(
       command.add_option("--max-points", o.max_points, help("Refuse requests that could produce more points"))
           ->capture_default_str());
+  o.added.push_back(command
+                        .add_option("--max-memory", o.max_memory,
+                                    help("Refuse requests whose estimated peak memory exceeds this (e.g. 512M, 2G)")));
+  // Not in `added`: it applies to any run, not only to generation.
+  command.add_flag("--quiet,-q", o.quiet, help("No progress bar on the terminal"));
   o.added.push_back(command.add_option("--param,-P", o.params, help("Method parameter NAME=VALUE (repeatable)")));
 }
 
@@ -60,6 +67,7 @@ GenerateRequest generation_request(const GenerationOptions& o, const GenerationO
   request.seed = o.seed;
   request.threads = o.threads;
   request.max_points = o.max_points;
+  if (!o.max_memory.empty()) request.max_memory = parse_size(o.max_memory, "--max-memory");
   request.params = parse_params(o.params);
   return request;
 }
@@ -70,12 +78,27 @@ bool any_generation_option_given(const GenerationOptions& o) {
   return false;
 }
 
-std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets) {
+double parse_size(const std::string& text, const std::string& option) {
+  double value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  std::string unit(end, text.data() + text.size());
+  if (unit == "B") unit.clear();
+  if (unit.size() == 3 && unit.substr(1) == "iB") unit.resize(1);
+  static const std::string kUnits = "KMGT";
+  const auto power = unit.empty() ? 0 : kUnits.find(static_cast<char>(std::toupper(unit[0])));
+  if (ec != std::errc() || unit.size() > 1 || power == std::string::npos || !(value >= 0) || !std::isfinite(value))
+    throw InvalidArgument(option + " expects a size such as 512M or 2G, got '" + text + "'");
+  return std::ldexp(value, 10 * static_cast<int>(unit.empty() ? 0 : power + 1));
+}
+
+std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets,
+                                      const Progress& progress) {
   request = size_request(find_method(method), std::move(request));
   std::vector<PointCloud> out;
   const std::uint64_t first = request.seed;
   for (std::size_t s = 0; s < sets; ++s) {
     request.seed = first + s;
+    request.progress = part_of(progress, s, sets);
     out.push_back(generate(method, request));
   }
   return out;

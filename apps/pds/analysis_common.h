@@ -19,7 +19,8 @@ namespace pds::cli {
 std::map<std::string, double> parse_params(const std::vector<std::string>& items);
 
 /// The options every subcommand that generates shares: --count, --radius,
-/// --dim, --torus, --bounds, --seed, --threads, --max-points, --param.
+/// --dim, --torus, --bounds, --seed, --threads, --max-points, --max-memory,
+/// --quiet, --param.
 struct GenerationOptions {
   DomainOptions domain;
   std::uint64_t count = 0;
@@ -27,6 +28,8 @@ struct GenerationOptions {
   std::uint64_t seed = 0;
   int threads = 0;
   std::uint64_t max_points = kDefaultMaxPoints;
+  std::string max_memory;  // e.g. 512M; empty: no budget
+  bool quiet = false;      // no progress bar
   std::vector<std::string> params;
   /// Set by add_generation_options; null for options left out.
   CLI::Option* count_option = nullptr;
@@ -58,7 +61,13 @@ bool any_generation_option_given(const GenerationOptions& options);
 /// `sets` realisations of `method` with seeds seed, seed+1, ... (request.seed
 /// is the first), sized by pds::size_request (a radius-only method asked for
 /// a count gets the radius of relative radius kCountRelativeRadius).
-std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets);
+/// Progress: one part per set (pds::part_of).
+std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets,
+                                      const Progress& progress = {});
+
+/// Bytes from a size such as 512M, 2G, 1.5GiB or 1000000 (K, M, G, T: powers
+/// of 1024); throws InvalidArgument naming the option.
+double parse_size(const std::string& text, const std::string& option);
 
 /// Writes a CSV with a header line and one row per index of the columns.
 void write_csv_columns(const std::string& path, const std::vector<std::string>& names,

@@ -19,6 +19,7 @@
 #include "pds/io/point_file.h"
 #include "pds/io/report_json.h"
 #include "pds/registry.h"
+#include "terminal.h"
 
 namespace pds::cli {
 namespace {
@@ -70,12 +71,17 @@ AnalysisReport analyze_and_draw(const std::vector<PointSet<D>>& sets, const Doma
         throw InvalidArgument(std::string(name) + ": spectra and the pair correlation are measured in 2D and 3D only");
 
   AnalysisCurves curves;
-  AnalysisReport report = analyze<D>(sets, domain,
-                                     {.radius = radius,
-                                      .max_frequency = opt.max_frequency,
-                                      .spectrum = !opt.spectrum.empty() || !opt.radial.empty(),
-                                      .pcf = {.r_max = opt.pcf_max, .bandwidth = opt.pcf_bandwidth}},
-                                     &curves);
+  AnalysisReport report;
+  {
+    const ProgressBar bar("analysis", opt.generation.quiet);
+    report = analyze<D>(sets, domain,
+                        {.radius = radius,
+                         .max_frequency = opt.max_frequency,
+                         .spectrum = !opt.spectrum.empty() || !opt.radial.empty(),
+                         .pcf = {.r_max = opt.pcf_max, .bandwidth = opt.pcf_bandwidth},
+                         .progress = bar.progress()},
+                        &curves);
+  }
   if (!report.spectrum_note.empty() && (D == 2 || D == 3))
     report.spectrum_note = "skipped: more than " + std::to_string(static_cast<long long>(kDefaultSpectrumWork)) +
                            " point-frequency products; ask with --frequencies, --spectrum or --radial";
@@ -163,7 +169,8 @@ void add_analyze(CLI::App& app) {
       opt->generation.domain.bounds = opt->domain.bounds;
       GenerateRequest request = generation_request(opt->generation, kAnalyzeGeneration);
       request.radius = r;
-      clouds = generate_sets(opt->method, request, opt->sets);
+      const ProgressBar bar(opt->method + " sets", opt->generation.quiet);
+      clouds = generate_sets(opt->method, request, opt->sets, bar.progress());
       source.method = opt->method;
       source.seed = request.seed;
     } else {

@@ -9,6 +9,7 @@
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/registry.h"
+#include "terminal.h"
 
 namespace pds::cli {
 namespace {
@@ -31,7 +32,9 @@ void add_generate(CLI::App& app) {
   add_generation_options(*cmd, opt->generation);
   cmd->add_option("--output,-o", opt->output, "Output file (.csv or .npy); '-' for CSV on stdout")
       ->capture_default_str();
-  cmd->add_option("--dtype", opt->dtype, "Element type of .npy output")
+  cmd->add_option("--dtype", opt->dtype,
+                  "Coordinates as float64 or float32 (.npy stores that type); float32 keeps --radius and the "
+                  "bounds after rounding")
       ->check(CLI::IsMember({"float64", "float32"}))
       ->capture_default_str();
   add_constraint_options(*cmd, opt->constraints);
@@ -39,9 +42,17 @@ void add_generate(CLI::App& app) {
   cmd->callback([opt] {
     GenerateRequest request = generation_request(opt->generation);
     apply_constraint_options(opt->constraints, request);
-    const PointCloud points = generate(opt->method, request);
+    request.float32 = opt->dtype == "float32";
+    PointCloud points;
+    {
+      const ProgressBar bar(opt->method, opt->generation.quiet);
+      request.progress = bar.progress();
+      points = generate(opt->method, request);
+    }
+    if (opt->output != "-") interrupt_removes(temporary_path(opt->output));
     write_points(opt->output, points, opt->dtype == "float32" ? NpyType::Float32 : NpyType::Float64);
-    if (const std::size_t fixed = request.constraints.fixed.size())
+    interrupt_removes("");
+    if (const std::size_t fixed = request.constraints.fixed.size(); fixed && !opt->generation.quiet)
       std::cerr << "pds: the first " << fixed << " of " << points.size() << " points are the fixed ones of "
                 << opt->constraints.fixed << "\n";
   });

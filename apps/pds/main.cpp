@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "pds/error.h"
+#include "terminal.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"pds: Poisson disk and blue-noise sampling.\n"};
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   pds::cli::add_tile(app);
   pds::cli::add_render(app);
   pds::cli::add_render_sheet(app);
+  pds::cli::install_interrupt_handler();
   try {
     app.parse(argc, argv);
     return 0;

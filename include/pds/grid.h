@@ -124,6 +124,16 @@ class Grid {
     });
   }
 
+  /// Calls f(index, distance2) for the points stored in p's own cell; f
+  /// returns false to stop early. Returns false if stopped. (A cheap first
+  /// look before a walk: p's cell is the one a walk would visit first.)
+  template <class F>
+  bool for_each_in_own_cell(const Point<D>& p, F&& f) const {
+    for (std::int32_t i = head_[cell_of(p)]; i >= 0; i = next_[static_cast<std::size_t>(i)])
+      if (!f(i, domain_.distance2(p, points_[static_cast<std::size_t>(i)]))) return false;
+    return true;
+  }
+
   /// True if some stored point lies strictly closer than r to p.
   bool any_closer_than(const Point<D>& p, double r) const {
     const double r2 = r * r;

@@ -38,6 +38,12 @@ void require_point_budget(double points, int dim, std::uint64_t max_points, cons
 /// requests before any memory is committed.
 double packing_count(double volume, double r, int dim);
 
+/// The count a set at minimum distance r typically reaches in a region of
+/// the given volume when run until (nearly) nothing fits: about 0.6 of
+/// packing_count (maximal sets reach relative radius 0.75-0.9). An estimate
+/// for progress and memory, not a bound.
+double typical_count(double volume, double r, int dim);
+
 /// Checks r and that the densest packing at r fits the point budget.
 template <int D>
 void require_radius_budget(const Domain<D>& domain, double r, std::uint64_t max_points) {

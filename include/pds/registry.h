@@ -21,6 +21,7 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 #include "pds/samplers/constraints.h"
 
 namespace pds {
@@ -70,7 +71,18 @@ struct GenerateRequest {
   std::uint64_t seed = 0;
   int threads = 0;  // 0: all hardware threads
   std::uint64_t max_points = kDefaultMaxPoints;
+  /// Refuse, before allocating, requests whose estimated peak memory
+  /// (peak_memory_estimate) exceeds this many bytes; 0: no budget but the
+  /// machine's memory.
+  double max_memory = 0;
   std::map<std::string, double> params;
+  /// Output rounded to float32 that keeps the promises (pds/float32.h): every
+  /// point in [lo, hi), and with a radius every pair at least that far apart,
+  /// decided on the rounded coordinates. The doubles returned are float32 values.
+  bool float32 = false;
+  /// Progress and cancellation (pds/progress.h), reported by the methods
+  /// that can run for long: best-candidate, dart-throwing, jones, fpo.
+  Progress progress;
   RequestConstraints constraints;  // radius field, mask, fixed points (docs/density.md)
 
   template <int D>
@@ -138,6 +150,10 @@ struct Method {
   bool constraints = false;        // takes GenerateRequest::constraints (radius field, mask, fixed points)
   DimRange dims;
   std::vector<RhoBand> rho;  // expected relative radius, where measured
+  /// Peak memory a run allocates over the size of its output (8 bytes a
+  /// coordinate), measured at N = 10^6 by scripts/peak_memory.py
+  /// (docs/reliability.md) and rounded up: the factor of peak_memory_estimate.
+  double memory_ratio = 4;
   std::vector<MethodParam> params;
   /// Runs the method on a request that generate() has already validated.
   PointCloud (*run)(const GenerateRequest&) = nullptr;
@@ -150,8 +166,17 @@ std::span<const Method> methods();
 const Method& find_method(const std::string& name);
 
 /// Validates the request against the method (dimension, domain, sizing,
-/// parameters, point budget) and runs it.
+/// parameters, point budget) and runs it; with request.float32, rounds the
+/// result keeping its promises (a method that promises a minimum distance
+/// samples at the slightly larger radius of float32_sampling_radius).
 PointCloud generate(const std::string& method, const GenerateRequest& request);
+
+/// The peak memory in bytes a request to `method` is expected to allocate:
+/// its points (the count, or for a radius pds::typical_count, an estimate)
+/// x dim x 8 bytes x the method's memory_ratio. The process
+/// itself (about 14 MB) is not counted. GenerateRequest::max_memory and
+/// --max-memory refuse by it.
+double peak_memory_estimate(const Method& method, const GenerateRequest& request);
 
 /// The relative radius (Lagae & Dutre 2008; analysis/relative_radius.h) at
 /// which a count is turned into a radius for a method that takes only a

@@ -22,11 +22,16 @@ What differs:
   first call costs what ``fill_space`` costs (milliseconds for 10^5 points)
   and the memory of the whole set.
 - The method is pds's Bridson sampler (the algorithm SciPy implements, with
-  ``ncandidates`` as its k), which draws candidates in the annulus [r, 2r];
-  ``hypersphere`` is accepted for compatibility and does not change that.
+  ``ncandidates`` as its k). ``hypersphere="volume"`` draws candidates
+  uniformly in the annulus [r, 2r] (SciPy draws them in the ball of radius
+  2r and wastes those closer than r: the same law, with k counting only
+  useful tries); ``hypersphere="surface"`` draws them on the sphere of
+  radius 1.001 r, as SciPy does (a denser set; bridson's ``surface=1``).
   ``method=`` picks any other pds method that takes a radius, e.g.
-  ``"dunbar-humphreys"`` (maximal, 2D) or ``"ebeida"`` (maximal).
-- ``d`` must be 2 or 3; ``optimization`` must be None.
+  ``"dunbar-humphreys"`` (maximal, 2D) or ``"ebeida"`` (maximal); those take
+  ``hypersphere="volume"`` only.
+- ``d`` is any dimension the method takes (1 to 8 for bridson);
+  ``optimization`` must be None.
 - Seeds: an int ``s`` is the pds seed ``s`` (so ``pds generate bridson
   --radius R --seed s`` prints the same points); a ``numpy.random.Generator``
   or ``RandomState`` gives one 64-bit draw at construction (advancing it
@@ -78,8 +83,10 @@ class PoissonDisk:
         Minimal distance to keep between points (default 0.05), in the units
         of the bounds.
     hypersphere : {"volume", "surface"}
-        Accepted for compatibility; pds's Bridson sampler always draws its
-        candidates in the annulus [radius, 2 radius].
+        Where Bridson's candidates are drawn: "volume" (default) uniformly in
+        the annulus [radius, 2 radius], "surface" on the sphere of radius
+        1.001 radius (denser sets, as SciPy's "surface"). Other methods take
+        "volume" only.
     ncandidates : int
         Candidates tried around an active sample before it retires (Bridson's
         k, default 30).
@@ -147,7 +154,11 @@ class PoissonDisk:
         self.l_bounds = lo.copy()
         self.u_bounds = hi.copy()
         self._bounds = None if l_bounds is None and u_bounds is None else np.concatenate([lo, hi]).tolist()
-        self._params = {"k": self.ncandidates} if self.method == "bridson" else {}
+        if hypersphere == "surface" and self.method != "bridson":
+            raise ValueError(f"hypersphere='surface' is a bridson option; method {self.method!r} takes 'volume' only")
+        self._params = {}
+        if self.method == "bridson":
+            self._params = {"k": self.ncandidates, "surface": int(hypersphere == "surface")}
         self._seed = _pds_seed(seed)
         self.reset()
 

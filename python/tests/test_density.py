@@ -64,5 +64,7 @@ def test_bad_input_raises_value_error():
         pds.generate("bridson", mask=density, count=10)
     with pytest.raises(ValueError, match="fixed point 1"):
         pds.generate("bridson", radius=0.1, fixed=[[2.0, 0.5]])
+    with pytest.raises(ValueError, match="float32 is not taken"):
+        pds.generate("bridson", mask=density, radius=0.1, dtype="float32")
     with pytest.raises(ValueError, match="needs dim=2"):
         pds.generate("bridson", radius=0.1, dim=3, mask=density)

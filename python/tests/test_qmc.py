@@ -28,6 +28,22 @@ def test_fill_space_keeps_the_radius_inside_the_unit_cube(d, radius):
     assert 0.85 < len(sample) / len(theirs) < 1.2
 
 
+@pytest.mark.parametrize("d,radius", [(2, 0.05), (3, 0.15)])
+def test_surface_candidates_give_a_denser_set_as_scipys(d, radius):
+    dense = qmc.PoissonDisk(d, radius=radius, hypersphere="surface", seed=1).fill_space()
+    sparse = qmc.PoissonDisk(d, radius=radius, hypersphere="volume", seed=1).fill_space()
+    assert np.all(dense >= 0) and np.all(dense < 1)
+    assert min_distance(dense) >= radius
+    # SciPy's own surface sampler fills the cube about as densely.
+    theirs = scipy_qmc.PoissonDisk(d, radius=radius, hypersphere="surface", seed=1).fill_space()
+    assert 0.85 < len(dense) / len(theirs) < 1.2
+    assert len(dense) > 1.15 * len(sparse)
+    same = pds.generate("bridson", radius=radius, dim=d, seed=1, surface=1)
+    assert same.tobytes() == dense.tobytes()
+    with pytest.raises(ValueError, match="surface"):
+        qmc.PoissonDisk(2, radius=0.05, hypersphere="surface", method="ebeida")
+
+
 def test_random_continues_and_fill_space_completes():
     engine = qmc.PoissonDisk(2, radius=0.03, seed=7)
     first = engine.random(10)

@@ -59,4 +59,6 @@ double packing_count(double volume, double r, int dim) {
   return 1.2 * volume / packing_volume_per_point(r / 2.0, dim) + 1.0;
 }
 
+double typical_count(double volume, double r, int dim) { return 0.6 * packing_count(volume, r, dim); }
+
 }  // namespace pds

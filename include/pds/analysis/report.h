@@ -26,6 +26,7 @@
 #include "pds/analysis/spectrum.h"
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -48,6 +49,10 @@ struct AnalysisOptions {
   /// The centered, wrap-around and mixture discrepancies (O(N^2 D) each) are
   /// computed for sets of at most this many points.
   std::size_t discrepancy_points = std::size_t{1} << 14;
+  /// Progress (pds/progress.h): one unit per set measured, then one each for
+  /// the spectrum and the pair correlation; returning false stops with
+  /// pds::Cancelled.
+  Progress progress;
 };
 
 /// Maximality at AnalysisOptions::radius (analysis/maximality.h).

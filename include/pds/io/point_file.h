@@ -11,7 +11,8 @@
 // little-endian float64 ('<f8', the default) or float32 ('<f4'); Fortran
 // order and big-endian arrays are read too. Writing float32 rounds each
 // coordinate to the nearest float, which can move two points at the minimum
-// distance a little closer: use float64 where the distance must hold exactly.
+// distance a little closer; GenerateRequest::float32 (pds/float32.h) makes a
+// set whose float32 values keep it.
 //
 // Errors name the file and, for CSV, the line. Writing goes to a temporary
 // file beside the target that is renamed over it only when complete, so a
@@ -32,6 +33,11 @@ PointCloud read_points(const std::string& path);
 /// Writes a .csv or .npy file (atomically), or CSV to standard output for "-".
 /// `npy_type` applies to .npy only.
 void write_points(const std::string& path, const PointCloud& points, NpyType npy_type = NpyType::Float64);
+
+/// The temporary file write_points writes `path` to before renaming it over
+/// `path` (beside it, named after this process), so that a caller that stops
+/// the process (the command line on Ctrl-C) can remove it.
+std::string temporary_path(const std::string& path);
 
 /// Stream forms; `name` is used in error messages.
 PointCloud read_csv(std::istream& in, const std::string& name);

@@ -11,6 +11,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -25,6 +26,7 @@ struct BestCandidateParams {
   std::optional<std::uint64_t> count;  // samples to place
   std::optional<double> radius;        // stop (or fail, with a count) once the best candidate is closer than this
   int m = kBestCandidateDefaultM;      // candidates per existing sample, >= 1
+  Progress progress;                   // optional progress report and cancellation (pds/progress.h)
 };
 
 template <int D>
@@ -47,7 +49,8 @@ struct BestCandidateResult {
 /// candidates while m*i < kBestCandidateExactBelow, and from there on a
 /// Poisson process of candidates with mean m*i (count within a few per cent
 /// of m*i), which lets the search skip every region that cannot hold the
-/// winner. Distances are the domain's (nearest periodic image on a torus).
+/// winner. From 4 dimensions every round draws exactly m*i candidates (the
+/// literal method, m N^2 / 2 candidates in all; refused past 5e8). Distances are the domain's (nearest periodic image on a torus).
 /// Guarantees: samples in [lo, hi); same seed, same points; each reported
 /// distance is exact (Domain::distance2).
 /// Invalid (InvalidArgument): m < 1; neither count nor radius; count 0;

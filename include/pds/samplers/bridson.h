@@ -21,7 +21,17 @@ struct BridsonParams {
   double radius = 0.0;                 // minimum distance between samples, > 0
   int k = 30;                          // candidates tried around an active sample before it retires, >= 1
   std::optional<std::uint64_t> count;  // return exactly this many (see below)
+  /// Candidates on the sphere of radius kSurfaceRadius * radius around the
+  /// active sample instead of uniform in the annulus [r, 2r] (SciPy's
+  /// PoissonDisk(hypersphere="surface")): each new sample lands just beyond
+  /// the radius of one other, a denser set (2D torus, r = 0.02: 2,031
+  /// points at relative radius 0.84 against 1,536 at 0.73).
+  bool surface = false;
 };
+
+/// The candidates' sphere with BridsonParams::surface, in radii: just beyond
+/// r so that rounding never rejects a candidate for being at exactly r (as SciPy).
+inline constexpr double kSurfaceRadius = 1.001;
 
 /// Guarantees: no two samples closer than `radius` (checked in the exact
 /// double arithmetic of Domain::distance2, so the all-pairs oracle agrees),

@@ -9,6 +9,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -27,6 +28,7 @@ struct DartThrowingParams {
   std::optional<std::uint64_t> count;  // stop once this many are placed (error if they cannot be)
   std::uint64_t max_failures = 0;      // consecutive rejections that end the loop; 0: the default rule above
   bool all_pairs = false;              // the textbook's literal check against every sample, O(N) a dart
+  Progress progress;                   // optional progress report and cancellation (pds/progress.h)
 };
 
 /// Guarantees: no two samples closer than `radius` (the domain's metric, the

@@ -11,6 +11,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -20,6 +21,8 @@ struct FpoParams {
   /// Stop rule: stop after a sweep that grows the minimum distance by less
   /// than this fraction (0: stop only when it does not grow at all), >= 0.
   double tolerance = 1e-4;
+  /// Optional progress (points visited out of sweeps x count) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// What one sweep left: over all points, the smallest and the mean distance

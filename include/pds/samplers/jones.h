@@ -6,12 +6,14 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
 struct JonesParams {
   double radius = 0.01;                          // minimum distance between samples, > 0
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
+  Progress progress;                             // optional progress report and cancellation (pds/progress.h)
 };
 
 /// T. R. Jones, "Efficient generation of Poisson-disk sampling patterns",

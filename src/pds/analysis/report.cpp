@@ -131,7 +131,11 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
   });
   std::array<double, 3> hickernell{};
   const std::vector<double> lo(domain.lo.begin(), domain.lo.end()), hi(domain.hi.begin(), domain.hi.end());
-  for (const auto& s : sets) {
+  const auto m = static_cast<double>(sets.size());
+  ProgressReporter progress(options.progress, m + 2);
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    progress.update(static_cast<double>(k));
+    const PointSet<D>& s = sets[k];
     const Spacing sp = spacing(s, domain);
     rho_min += sp.rho_min;
     rho_mean += sp.rho_mean;
@@ -144,7 +148,6 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
       hickernell[2] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Mixture);
     }
   }
-  const double m = static_cast<double>(sets.size());
   if (smallest > 1) {
     out.rho_min = rho_min / m;
     out.rho_mean = rho_mean / m;
@@ -159,10 +162,12 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
   if constexpr (D != 2 && D != 3) {
     out.spectrum_note = "not computed: the spectrum is measured in 2D and 3D only";
     out.pcf_note = "not computed: the pair correlation is measured in 2D and 3D only";
+    progress.finish();
     return out;
   } else {
 
   // Fourier view.
+  progress.update(m);
   const int K = options.max_frequency > 0 ? options.max_frequency : (D == 2 ? 128 : 32);
   const double work = static_cast<double>(total) * std::pow(2.0 * K + 1.0, D) / 2.0;
   if (smallest > 0 && (options.spectrum || options.max_frequency > 0 || work <= options.spectrum_work)) {
@@ -179,11 +184,13 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
   }
 
   // Pair correlation.
+  progress.update(m + 1);
   if (smallest > 1) {
     PairCorrelation g = pair_correlation<D>(sets, domain, options.pcf);
     out.pcf = summarise(g);
     if (curves) curves->pcf = std::move(g);
   }
+  progress.finish();
   return out;
   }
 }

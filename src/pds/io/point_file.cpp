@@ -262,6 +262,8 @@ PointCloud read_points(const std::string& path) {
   return ext == ".csv" ? read_csv(in, path) : read_npy(in, path);
 }
 
+std::string temporary_path(const std::string& path) { return path + ".tmp." + std::to_string(::getpid()); }
+
 void write_points(const std::string& path, const PointCloud& points, NpyType npy_type) {
   if (path == "-") {
     write_csv(std::cout, points);
@@ -272,7 +274,7 @@ void write_points(const std::string& path, const PointCloud& points, NpyType npy
   const std::string ext = extension_of(path);
   if (ext != ".csv" && ext != ".npy")
     throw InvalidArgument(path + ": unknown point file extension '" + ext + "' (use .csv or .npy)");
-  const std::string temp = path + ".tmp." + std::to_string(::getpid());
+  const std::string temp = temporary_path(path);
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) throw Failure(path + ": cannot write: " + std::strerror(errno));

@@ -32,6 +32,7 @@ const Method& dunbar_humphreys_method() {
       // Measured over seeds 1-5 (variant 0, boundary sampling, denser than dart
       // throwing): box 0.880-0.885, torus 0.871-0.873.
       .rho = {{2, false, 0.02, 0.86, 0.90}, {2, true, 0.02, 0.85, 0.89}},
+      .memory_ratio = 2,
       .params = {{"variant", 0, 0, 2, true,
                   "0: boundary sampling (fastest; 25% denser than dart throwing), 1: scalloped sectors, one annulus "
                   "at a time as in the paper (5% denser), 2: scalloped sectors, uniform over all free annuli "
@@ -64,6 +65,7 @@ const Method& wei_method() {
               {2, true, 0.02, 0.755, 0.80},
               {3, false, 0.08, 0.82, 0.87},
               {3, true, 0.08, 0.78, 0.83}},
+      .memory_ratio = 2.5,
       .params =
           {{"k", double(WeiParams{}.trials), 1, 1000, true,
             "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},
@@ -108,6 +110,7 @@ const Method& ebeida_method() {
               {2, true, 0.02, 0.755, 0.80},
               {3, false, 0.08, 0.82, 0.87},
               {3, true, 0.08, 0.78, 0.83}},
+      .memory_ratio = 11,
       .run =
           [](const GenerateRequest& r) {
             const EbeidaParams params{*r.radius, r.max_points};

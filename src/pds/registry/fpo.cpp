@@ -22,6 +22,7 @@ const Method& fpo_method() {
       .exact_count = true,
       .square_torus_only = true,
       .dims = {2, 2},
+      .memory_ratio = 13,
       .params = {{"sweeps", 100, 1, 100000, true, "most sweeps (each moves every point once)"},
                  {"tolerance", 1e-4, 0, 1, false,
                   "stop after a sweep that grows the minimum distance by less than this fraction"},
@@ -32,6 +33,7 @@ const Method& fpo_method() {
             FpoParams params;
             params.sweeps = static_cast<int>(r.param("sweeps", 100));
             params.tolerance = r.param("tolerance", 1e-4);
+            params.progress = r.progress;
             if (r.param("start", 0) == 0) return PointCloud::from<2>(fpo(*r.count, domain, params, r.seed).points);
             const PointSet<2> start = elimination<2>({.count = *r.count}, domain, r.seed);
             return PointCloud::from<2>(fpo_optimize(start, domain, params).points);

@@ -24,9 +24,10 @@ const Method& jones_method() {
       .dims = {2, 2},
       // Measured over seeds 1-5: box 0.783-0.789, torus 0.775-0.780.
       .rho = {{2, false, 0.02, 0.76, 0.81}, {2, true, 0.02, 0.755, 0.80}},
+      .memory_ratio = 15.5,
       .run =
           [](const GenerateRequest& r) {
-            const JonesParams params{*r.radius, r.max_points};
+            const JonesParams params{*r.radius, r.max_points, r.progress};
             return PointCloud::from<2>(jones(params, r.domain<2>(), r.seed));
           },
   };

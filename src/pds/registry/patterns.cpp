@@ -33,6 +33,7 @@ const Method& white_noise_method() {
       .exact_count = true,
       .compare = true,
       .dims = {1, kMaxCloudDim},
+      .memory_ratio = 1,
       .run = [](const GenerateRequest& r) { return white_noise({*r.count}, box_of(r), r.seed); },
   };
   return method;
@@ -49,6 +50,7 @@ const Method& regular_method() {
       .min_distance = true,
       .exact_count = true,
       .deterministic = true,
+      .memory_ratio = 2,
       .run =
           [](const GenerateRequest& r) {
             return run_typed(r, [&](const auto& domain) {
@@ -77,6 +79,7 @@ const Method& jittered_method() {
       .takes_count = true,
       .exact_count = true,
       .compare = true,
+      .memory_ratio = 2,
       .run =
           [](const GenerateRequest& r) {
             return run_typed(r, [&](const auto& domain) {
@@ -101,6 +104,7 @@ const Method& multi_jittered_method() {
           "Correlated multi-jittered sampling, Pixar Technical Memo 13-01, 2013",
       .takes_count = true,
       .exact_count = true,
+      .memory_ratio = 2,
       .params = {{.name = "correlated",
                   .default_value = 1,
                   .min = 0,
@@ -131,6 +135,7 @@ const Method& latin_hypercube_method() {
       .takes_count = true,
       .exact_count = true,
       .dims = {1, kMaxCloudDim},
+      .memory_ratio = 1,
       .run = [](const GenerateRequest& r) { return latin_hypercube({*r.count}, box_of(r), r.seed); },
   };
   return method;

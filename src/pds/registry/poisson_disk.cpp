@@ -40,6 +40,7 @@ const Method& dart_throwing_method() {
               {2, true, 0.02, 0.73, 0.77},
               {3, false, 0.08, 0.77, 0.83},
               {3, true, 0.08, 0.74, 0.79}},
+      .memory_ratio = 3.5,
       .params = {{"all-pairs", 0, 0, 1, true, "1: the literal check against every sample (same output, O(N) a dart)"},
                  {"failures", 0, 0, 1e15, true,
                   "consecutive rejected darts that end the loop; 0: max(10^4, packing bound at the radius)"},
@@ -52,6 +53,7 @@ const Method& dart_throwing_method() {
               params.count = r.count;
               params.all_pairs = r.param("all-pairs", 0) != 0;
               params.max_failures = static_cast<std::uint64_t>(r.param("failures", 0));
+              params.progress = r.progress;
               if (r.constraints.active()) {
                 if (params.all_pairs)
                   throw InvalidArgument(
@@ -87,7 +89,10 @@ const Method& bridson_method() {
               {2, true, 0.02, 0.71, 0.75},
               {3, false, 0.08, 0.74, 0.79},
               {3, true, 0.08, 0.72, 0.76}},
+      .memory_ratio = 6,
       .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
+                 {"surface", 0, 0, 1, true,
+                  "1: candidates on the sphere of radius 1.001 r, not in the annulus [r, 2r] (denser)"},
                  {"rho", kBridsonCountRho, 0.01, 1, false,
                   "relative radius that sets the radius for --count without --radius"}},
       .run =
@@ -95,8 +100,11 @@ const Method& bridson_method() {
             return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               BridsonParams params;
               params.k = static_cast<int>(r.param("k", 30));
+              params.surface = r.param("surface", 0) != 0;
               params.count = r.count;
               if (r.constraints.active()) {
+                if (params.surface)
+                  throw InvalidArgument("bridson: surface=1 is not taken with a density, a mask or fixed points");
                 params.radius = r.radius.value_or(0.0);
                 return bridson(params, r.constraints.typed(domain), domain, r.seed);
               }
@@ -137,19 +145,21 @@ const Method& best_candidate_method() {
       // Measured over seeds 1-5 (m = 10; it stops at the first round whose best
       // candidate is closer than the radius): 2D box 0.746-0.750, torus
       // 0.729-0.740; 3D at r = 0.1, box 0.791-0.801, torus 0.747-0.749.
-      .dims = {kMinDim, kSpaceDim},
+      .dims = {kMinDim, kMaxDim},
       .rho = {{2, false, 0.02, 0.71, 0.78},
               {2, true, 0.02, 0.70, 0.77},
               {3, false, 0.1, 0.76, 0.83},
               {3, true, 0.1, 0.72, 0.78}},
+      .memory_ratio = 31,
       .params = {{"m", kBestCandidateDefaultM, 1, 1000, true, "candidates per sample already placed"}},
       .run =
           [](const GenerateRequest& r) {
-            return run_typed<kMinDim, kSpaceDim>(r, [&](const auto& domain) {
+            return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               BestCandidateParams params;
               params.count = r.count;
               params.radius = r.radius;
               params.m = static_cast<int>(r.param("m", kBestCandidateDefaultM));
+              params.progress = r.progress;
               return best_candidate(params, domain, r.seed);
             });
           },
@@ -169,6 +179,7 @@ const Method& elimination_method() {
       .takes_count = true,
       .exact_count = true,
       .progressive = true,
+      .memory_ratio = 23,
       .params = {{"candidates", 5, 1, 100, false, "white-noise candidates as a multiple of the count"},
                  {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},

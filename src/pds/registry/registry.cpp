@@ -7,6 +7,7 @@
 #include "descriptors.h"
 #include "pds/detail/format.h"
 #include "pds/error.h"
+#include "pds/float32.h"
 
 namespace pds {
 
@@ -120,6 +121,10 @@ void validate_constraints(const Method& m, const GenerateRequest& r) {
   if (r.count)
     throw InvalidArgument(m.name +
                           ": --count is not taken with a density, a mask or fixed points (size by the radius)");
+  // Rounding would move the fixed points and could break the pair rule.
+  if (r.float32)
+    throw InvalidArgument(m.name +
+                          ": float32 output is not taken with a density, a mask or fixed points (use float64)");
   if (!c.radius) return;
   if (r.radius) throw InvalidArgument(m.name + ": a density takes a radius range, not --radius");
   require_radius(c.rmin, "rmin");
@@ -181,6 +186,15 @@ void validate(const Method& m, const GenerateRequest& r) {
     throw InvalidArgument(m.name + (m.takes_count ? " needs --count" : " needs --radius"));
   }
   if (r.threads < 0) throw InvalidArgument("threads must be 0 (all) or positive, got " + std::to_string(r.threads));
+  if (!(r.max_memory >= 0) || !std::isfinite(r.max_memory))
+    throw InvalidArgument("max-memory must be a size of 0 (none) or more, got " + detail::format_number(r.max_memory));
+  if (r.max_memory > 0) {
+    const double need = peak_memory_estimate(m, r);
+    if (need > r.max_memory)
+      throw InvalidArgument(m.name + ": the request needs about " + detail::format_number(need / (1 << 20)) +
+                            " MiB at its peak, above the budget of " +
+                            detail::format_number(r.max_memory / (1 << 20)) + " MiB (--max-memory)");
+  }
   for (const auto& entry : r.params) {
     const std::string& name = entry.first;
     const double value = entry.second;
@@ -199,12 +213,53 @@ void validate(const Method& m, const GenerateRequest& r) {
   }
 }
 
+// Runs the method so that its output, rounded to float32, keeps the
+// promises of the request (pds/float32.h explains the radius it samples at).
+PointCloud run_float32(const Method& m, const GenerateRequest& request) {
+  std::vector<double> lo, hi;
+  request.bounds(lo, hi);
+  const double spacing = float32_spacing(lo, hi);
+  if (!request.radius || !m.min_distance) {
+    PointCloud points = m.run(request);
+    round_to_float32(points, lo, hi);
+    return points;
+  }
+  const double r = *request.radius;
+  GenerateRequest inflated = request;
+  // The bound makes the first attempt succeed; the check guards the bound.
+  constexpr int kAttempts = 4;
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    inflated.radius = float32_sampling_radius(r, request.dim, spacing, attempt);
+    PointCloud points = m.run(inflated);
+    round_to_float32(points, lo, hi);
+    if (!find_pair_closer_than(points, lo, hi, request.torus, r)) return points;
+  }
+  throw Failure(m.name + ": float32 rounding brought two points closer than radius " + detail::format_number(r) +
+                " in " + std::to_string(kAttempts) + " attempts (use float64)");
+}
+
 }  // namespace
+
+double peak_memory_estimate(const Method& method, const GenerateRequest& request) {
+  double points = request.count ? static_cast<double>(*request.count) : 0.0;
+  // A radius field sizes the set by its range: at most the count at rmin.
+  const std::optional<double> radius = request.constraints.radius ? request.constraints.rmin : request.radius;
+  if (radius) {
+    std::vector<double> lo, hi;
+    request.bounds(lo, hi);
+    double volume = 1.0;
+    for (std::size_t a = 0; a < lo.size(); ++a) volume *= hi[a] - lo[a];
+    const double typical = typical_count(volume, *radius, request.dim);
+    points = request.count ? std::min(points, typical) : typical;  // a count stops the run
+  }
+  points += static_cast<double>(request.constraints.fixed.size());
+  return points * request.dim * static_cast<double>(sizeof(double)) * method.memory_ratio;
+}
 
 PointCloud generate(const std::string& method, const GenerateRequest& request) {
   const Method& m = find_method(method);
   validate(m, request);
-  return m.run(request);
+  return request.float32 ? run_float32(m, request) : m.run(request);
 }
 
 }  // namespace pds

@@ -53,6 +53,7 @@ Method sequence_method(std::string name, std::string summary, std::string citati
                 .progressive = true,
                 .deterministic = true,
                 .dims = dims,
+                .memory_ratio = 1,
                 .params = std::move(params),
                 .run = run};
 }
@@ -102,6 +103,7 @@ const Method& hammersley_method() {
       .exact_count = true,
       .deterministic = true,
       .dims = {1, kHammersleyMaxDim},
+      .memory_ratio = 1,
       .params = {scramble_param(),
                  first_param(),
                  {.name = "size",

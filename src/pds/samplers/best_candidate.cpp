@@ -64,6 +64,7 @@
 #include <sstream>
 #include <string>
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/grid.h"
 #include "pds/grid_neighbourhood.h"
@@ -84,6 +85,19 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // and sub-boxes in each branch and bound).
 template <int D>
 constexpr double kLeavesPerSample = D == 2 ? 4.0 : 16.0;
+
+// From 4 dimensions the method is taken literally, m*i uniform candidates for
+// every sample: the leaves would number 2^D and more a sample, and their
+// dyadic sub-boxes 2^(D level). Each candidate costs one pruned grid walk
+// (distance2_if_above), so a set costs about m N^2 / 2 walks.
+template <int D>
+constexpr bool kLiteral = D >= 4;
+
+// The literal method's candidate budget: m N^2 / 2 walks at 0.1 (4D) to 1.2
+// (8D) microseconds each here, so about 1-10 minutes at the budget (10^4
+// points at m = 10); beyond it a request is refused rather than left running
+// for hours.
+constexpr double kLiteralMaxCandidates = 5e8;
 
 // A round's threshold theta follows the best distance from below: it is
 // kThresholdShare below a running mean of best x sqrt(i) (weight
@@ -567,6 +581,21 @@ class NearestSample {
   /// The squared distance from p to the nearest sample if it exceeds beat2,
   /// else a value <= beat2. `bound` is an upper bound on that distance.
   double distance2_if_above(const Point<D>& p, double beat2, double bound) const {
+    if constexpr (D >= 4) {
+      // Without a useful bound (every candidate of the literal method), ask
+      // first whether a sample lies within the distance to beat: the pruned,
+      // nearest-first walk of that ball usually stops in the first cells,
+      // where a search from the whole diameter would scan the grid.
+      if (bound == kInf) {
+        if (beat2 >= 0.0) {
+          auto farther = [&](std::int32_t, double d2) { return d2 > beat2; };
+          // p's own cell first: it settles most candidates without the walk's set-up.
+          if (!grid_.for_each_in_own_cell(p, farther) || !grid_.for_each_within(p, std::sqrt(beat2), farther))
+            return beat2;
+        }
+        return nearest2(p);
+      }
+    }
     for (double r = std::min(bound, diameter_);; r = diameter_) {
       double nearest2 = kInf;
       const bool whole = grid_.for_each_within(p, r, [&](std::int32_t, double d2) {
@@ -609,13 +638,19 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
                                           std::uint64_t seed) {
   validate(params, domain);
   // The leaves, up to kLeavesPerSample for each of the final samples (a
-  // radius alone leaves about 0.6 of the packing bound): refuse at once what
+  // radius alone leaves about typical_count): refuse at once what
   // would exceed the cell budget later.
   const double expected =
-      params.count ? static_cast<double>(*params.count) : 0.6 * packing_count(domain.volume(), *params.radius, D);
-  if (expected * kLeavesPerSample < D >> static_cast<double>(kMaxGridCells))
+      params.count ? static_cast<double>(*params.count) : typical_count(domain.volume(), *params.radius, D);
+  if (!kLiteral<D> && expected * kLeavesPerSample<D> > static_cast<double>(kMaxGridCells))
     throw InvalidArgument("best-candidate: the request needs more than " + std::to_string(kMaxGridCells) +
                           " leaf cells (" + format(expected) + " samples)");
+  if (kLiteral<D> && 0.5 * params.m * expected * expected > kLiteralMaxCandidates)
+    throw InvalidArgument("best-candidate: in " + std::to_string(D) + " dimensions every sample is the best of m*i " +
+                          "uniform candidates, about m N^2 / 2 = " + format(0.5 * params.m * expected * expected) +
+                          " candidates for " + format(expected) + " samples, more than the " +
+                          format(kLiteralMaxCandidates) + " allowed (hours of work); ask for fewer samples or a " +
+                          "smaller m, or use bridson");
   NearestSample<D> nearest(domain);
   std::optional<GapBoxes<D>> boxes;
   std::uint64_t rebuild_at = 0;
@@ -626,14 +661,17 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   double typical = -1.0, theta = kInf;
 
   BestCandidateResult<D> result;
+  ProgressReporter progress(params.progress, expected);
   PointSet<D> near;
   auto place = [&](const Point<D>& p, double distance) {
     result.points.push_back(p);
     result.distance.push_back(distance);
     nearest.add(p, result.points);
-    if (boxes) {
-      boxes->add_sample(p);
-      boxes->compact();
+    if constexpr (!kLiteral<D>) {
+      if (boxes) {
+        boxes->add_sample(p);
+        boxes->compact();
+      }
     }
   };
   {
@@ -642,6 +680,8 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   }
   while (result.points.size() < wanted) {
     const std::uint64_t i = result.points.size();
+    // The literal method's rounds cost m*i each: its work grows as i^2.
+    progress.update(kLiteral<D> ? static_cast<double>(i) * static_cast<double>(i) / expected : static_cast<double>(i));
     const std::uint64_t candidates = static_cast<std::uint64_t>(params.m) * i;
     double best2 = -1.0, best = -1.0;
     Point<D> winner{};
@@ -653,10 +693,10 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
         winner = c;
       }
     };
-    if (candidates < kBestCandidateExactBelow) {
+    if (kLiteral<D> || candidates < kBestCandidateExactBelow) {
       Rng rng(seed, {i});
       for (std::uint64_t t = 0; t < candidates; ++t) consider(uniform_point(rng, domain), kInf);
-    } else {
+    } else if constexpr (!kLiteral<D>) {
       if (!boxes || i >= rebuild_at) {
         // Leaves for twice the samples so far (at most the count): their size
         // follows the density.
@@ -745,15 +785,14 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
     }
     place(winner, best);
   }
+  progress.finish();
   return result;
 }
 
 #define PDS_INSTANTIATE(D)                                                                      \
   template BestCandidateResult<D> best_candidate_run<D>(const BestCandidateParams&, const Domain<D>&, \
                                                         std::uint64_t);
-PDS_INSTANTIATE(1)
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

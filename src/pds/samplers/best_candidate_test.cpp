@@ -43,20 +43,22 @@ TEST(BestCandidate, ReportedDistancesAreTheExactNearestEarlierSample) {
   }
 }
 
-TEST(BestCandidate, EarlyRoundsAreTheLiteralFarthestOfMTimesICandidates) {
-  // While m*i < 256 the candidates are exactly m*i uniform points of stream
-  // (seed, i): recompute them and the farthest by brute force.
-  const auto domain = Domain<2>::unit(true);
+// Rounds 1..n-1 of best_candidate() recomputed by brute force: the m*i
+// uniform points of stream (seed, i) and the farthest of them from all
+// earlier samples.
+template <int D>
+void expect_literal_rounds(const Domain<D>& domain, std::uint64_t n, int m, std::uint64_t seed) {
   BestCandidateParams params;
-  params.count = 60;
-  params.m = 4;
-  const auto points = best_candidate(params, domain, 8);
-  for (std::uint64_t i = 1; i < 60; ++i) {
-    Rng rng(8, {i});
+  params.count = n;
+  params.m = m;
+  const auto points = best_candidate(params, domain, seed);
+  ASSERT_EQ(points.size(), n);
+  for (std::uint64_t i = 1; i < n; ++i) {
+    Rng rng(seed, {i});
     double best2 = -1;
-    Point<2> winner{};
-    for (std::uint64_t t = 0; t < 4 * i; ++t) {
-      const Point<2> c = uniform_point(rng, domain);
+    Point<D> winner{};
+    for (std::uint64_t t = 0; t < static_cast<std::uint64_t>(m) * i; ++t) {
+      const Point<D> c = uniform_point(rng, domain);
       double nearest2 = INFINITY;
       for (std::uint64_t j = 0; j < i; ++j) nearest2 = std::min(nearest2, domain.distance2(c, points[j]));
       if (nearest2 > best2) {
@@ -64,8 +66,22 @@ TEST(BestCandidate, EarlyRoundsAreTheLiteralFarthestOfMTimesICandidates) {
         winner = c;
       }
     }
-    ASSERT_EQ(points[i], winner) << "round " << i;
+    ASSERT_EQ(points[i], winner) << D << "D, round " << i;
   }
+}
+
+TEST(BestCandidate, EarlyRoundsAreTheLiteralFarthestOfMTimesICandidates) {
+  // While m*i < 256 the candidates are exactly m*i uniform points.
+  expect_literal_rounds(Domain<2>::unit(true), 60, 4, 8);
+}
+
+TEST(BestCandidate, FromFourDimensionsEveryRoundIsLiteral) {
+  // Past 3D every round draws exactly m*i candidates, and the grid's pruned
+  // walk (reject when a sample lies within the best so far, else an exact
+  // nearest search) must pick the very candidate brute force picks.
+  expect_literal_rounds(Domain<4>{{-1, 0, 0, 0}, {1, 1, 0.5, 1}, false}, 150, 4, 3);
+  expect_literal_rounds(Domain<6>::unit(true), 120, 4, 5);
+  expect_literal_rounds(Domain<8>::unit(false), 100, 3, 7);
 }
 
 // Mitchell's method taken literally: sample i+1 is the farthest of exactly

@@ -287,7 +287,7 @@ class BridsonGrid {
   // sample is written to every padded position congruent to its cell.
   void copy_to_margin(const Point<D>& p, std::size_t cell) {
     // At most 1 + 2 * reach positions an axis (a period of one cell).
-    std::array<std::array<int, 2 * kMaxReach + 1>, D> positions;
+    std::array<std::array<int, 2 * kMaxReach + 1>, D> positions{};
     std::array<int, D> count{};
     for (int i = 0; i < D; ++i) {
       const int c = static_cast<int>(cell / stride_[i] % static_cast<std::size_t>(padded_[i]));
@@ -324,13 +324,17 @@ class BridsonGrid {
 // rejection test is mispredicted about every other candidate. Each axis has
 // its own stream (split from the seed), so the D generators run side by side
 // instead of one after the other.
+// With `surface` each accepted offset is scaled onto the sphere of radius
+// kSurfaceRadius r (its direction is uniform, as that of any uniform point of
+// the annulus is).
 template <int D>
 class AnnulusOffsets {
  public:
-  AnnulusOffsets(double r, std::uint64_t seed)
+  AnnulusOffsets(double r, bool surface, std::uint64_t seed)
       : inner2_(r * r),
         outer2_(4.0 * r * r),
         step_(2.0 * r * 0x1.0p-52),
+        sphere_(surface ? kSurfaceRadius * r : 0.0),
         streams_(make_streams(seed, std::make_index_sequence<D>())) {}
 
   [[gnu::always_inline]] const Point<D>& next() {
@@ -350,6 +354,10 @@ class AnnulusOffsets {
         v[i] = static_cast<double>(static_cast<std::int64_t>(streams_[i].next()) >> 11) * step_;
         s += v[i] * v[i];
       }
+      if (sphere_ > 0.0) {
+        const double scale = sphere_ / std::sqrt(std::max(s, inner2_));
+        for (int i = 0; i < D; ++i) v[i] *= scale;
+      }
       batch_[n] = v;
       n += static_cast<std::size_t>((s >= inner2_) & (s <= outer2_));
     }
@@ -362,7 +370,7 @@ class AnnulusOffsets {
   }
 
   static constexpr std::size_t kBatch = 64;
-  double inner2_, outer2_, step_;
+  double inner2_, outer2_, step_, sphere_;
   std::array<Rng, D> streams_;
   std::size_t next_ = kBatch;
   std::array<Point<D>, kBatch + 1> batch_;  // one spare slot for the last rejected draw
@@ -387,7 +395,7 @@ class ConflictGrid {
 };
 
 template <int D, bool Periodic>
-PointSet<D> grow(const Domain<D>& domain, double radius, int k, std::uint64_t seed) {
+PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, std::uint64_t seed) {
   std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius);
   Rng rng(seed);
   bool short_reach = true;
@@ -396,7 +404,7 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, std::uint64_t se
   // The active list holds coordinates, not indices: one memory access less
   // for each random pick.
   PointSet<D> active;
-  AnnulusOffsets<D> offsets(radius, seed);
+  AnnulusOffsets<D> offsets(radius, surface, seed);
   std::size_t cell = 0;
   const Point<D> first = uniform_point(rng, domain);
   grid.is_free(first, cell);
@@ -446,8 +454,9 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, std::uint64_t se
 }
 
 template <int D>
-PointSet<D> grow(const Domain<D>& domain, double radius, int k, std::uint64_t seed) {
-  return domain.periodic ? grow<D, true>(domain, radius, k, seed) : grow<D, false>(domain, radius, k, seed);
+PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, std::uint64_t seed) {
+  return domain.periodic ? grow<D, true>(domain, radius, k, surface, seed)
+                         : grow<D, false>(domain, radius, k, surface, seed);
 }
 
 // A uniformly random subset of `count` points, kept in their order.
@@ -489,7 +498,7 @@ void validate(const BridsonParams& params, const Domain<D>& domain) {
 template <int D>
 PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::uint64_t seed) {
   validate(params, domain);
-  PointSet<D> points = grow(domain, params.radius, params.k, seed);
+  PointSet<D> points = grow(domain, params.radius, params.k, params.surface, seed);
   if (!params.count) return points;
   if (points.size() < *params.count)
     throw InvalidArgument("bridson: only " + std::to_string(points.size()) + " points fit at radius " +

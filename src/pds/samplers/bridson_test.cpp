@@ -127,6 +127,26 @@ TEST(Bridson, MoreCandidatesPackMorePoints) {
   EXPECT_GT(many, few + 3 * 100) << few << " vs " << many;
 }
 
+TEST(Bridson, SurfaceCandidatesKeepTheRadiusAndPackDenser) {
+  // Candidates at 1.001 r from their active sample: each new sample nearly
+  // touches one other, so the set is denser, and still no pair is closer
+  // than r (box and torus, the plane and 4D).
+  BridsonParams params;
+  for (bool torus : {false, true}) {
+    const Domain<2> plane{{-1, 0}, {1, 0.5}, torus};
+    params.radius = 0.02;
+    params.surface = false;
+    const std::size_t annulus = bridson(params, plane, 5).size();
+    params.surface = true;
+    const auto dense = bridson(params, plane, 5);
+    expect_poisson_disk(dense, plane, params.radius);
+    EXPECT_GT(dense.size(), annulus * 5 / 4) << annulus << " vs " << dense.size();
+    const Domain<4> space{{0, 0, 0, 0}, {1, 1, 1, 1}, torus};
+    params.radius = 0.2;
+    expect_poisson_disk(bridson(params, space, 5), space, params.radius);
+  }
+}
+
 TEST(Bridson, BadParameters) {
   BridsonParams params;
   params.radius = 0.1;

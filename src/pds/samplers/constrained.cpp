@@ -40,6 +40,7 @@
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/limits.h"
+#include "pds/progress.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 #include "radius_levels.h"
@@ -205,7 +206,15 @@ PointSet<D> dart_throwing(const DartThrowingParams& params, const SamplingConstr
   const std::uint64_t wanted = params.count.value_or(std::numeric_limits<std::uint64_t>::max());
   Rng rng(seed);
   std::uint64_t failures = 0;
+  // As the uniform loop reports: the count, or the count at rmin (an upper
+  // bound) until the streak of misses takes over as the set fills.
+  const double expected = params.count ? static_cast<double>(wanted) : typical_count(domain.volume(), set.rmin(), D);
+  ProgressReporter progress(params.progress, expected);
   while (set.generated() < wanted) {
+    const auto placed = static_cast<double>(set.generated());
+    progress.update(params.count ? placed
+                                 : expected * std::max(placed / expected,
+                                                       static_cast<double>(failures) / static_cast<double>(bound)));
     if (set.try_add(uniform_point(rng, domain))) {
       failures = 0;
     } else if (++failures >= bound) {
@@ -215,6 +224,7 @@ PointSet<D> dart_throwing(const DartThrowingParams& params, const SamplingConstr
                             " darts in a row were rejected: that many do not fit the field and the mask");
     }
   }
+  progress.finish();
   return set.take();
 }
 

@@ -357,6 +357,34 @@ TEST(Constrained, ThroughTheRegistry) {
   GenerateRequest wrong_dim = request;
   wrong_dim.constraints.fixed = PointCloud{3, {0.5, 0.5, 0.5}};
   EXPECT_THROW(generate("bridson", wrong_dim), InvalidArgument);
+  GenerateRequest rounded = request;
+  rounded.float32 = true;  // would move the fixed points
+  EXPECT_THROW(generate("dart-throwing", rounded), InvalidArgument);
+  // Memory is estimated at rmin (the densest the field can be).
+  const double at_rmin = peak_memory_estimate(find_method("bridson"), request);
+  GenerateRequest uniform;
+  uniform.radius = 0.02;
+  EXPECT_GT(at_rmin, 0.0);
+  EXPECT_GE(at_rmin, peak_memory_estimate(find_method("bridson"), uniform));
+}
+
+TEST(Constrained, DartThrowingReportsProgressAndStops) {
+  auto c = radial_field(0.01, 0.05);
+  DartThrowingParams params;
+  double last = -1, total = 0;
+  params.progress.report = [&](double done, double of) {
+    EXPECT_GE(done, last);
+    last = done;
+    total = of;
+    return true;
+  };
+  const Domain<2> domain = Domain<2>::unit(false);
+  const PointSet<2> points = dart_throwing(params, c, domain, 1);
+  EXPECT_EQ(last, total);  // the last report is (total, total)
+  // Reporting changes nothing.
+  EXPECT_EQ(points, dart_throwing(DartThrowingParams{}, c, domain, 1));
+  params.progress.report = [](double done, double) { return done < 10; };
+  EXPECT_THROW(dart_throwing(params, c, domain, 1), Cancelled);
 }
 
 }  // namespace

@@ -84,7 +84,15 @@ PointSet<D> throw_darts(const DartThrowingParams& params, const Domain<D>& domai
   Check check(domain, params.radius);
   Rng rng(seed);
   std::uint64_t placed = 0, failures = 0;
+  // With a radius alone the run ends on a streak of misses: its share of
+  // the bound takes over from the count (typical_count) as the set fills.
+  const double expected =
+      params.count ? static_cast<double>(wanted) : typical_count(domain.volume(), params.radius, D);
+  ProgressReporter progress(params.progress, expected);
   while (placed < wanted) {
+    progress.update(params.count ? static_cast<double>(placed)
+                                 : expected * std::max(static_cast<double>(placed) / expected,
+                                                       static_cast<double>(failures) / static_cast<double>(bound)));
     const Point<D> dart = uniform_point(rng, domain);
     if (check.is_free(dart)) {
       check.add(dart);
@@ -99,6 +107,7 @@ PointSet<D> throw_darts(const DartThrowingParams& params, const Domain<D>& domai
                             "smaller radius");
     }
   }
+  progress.finish();
   return check.take();
 }
 

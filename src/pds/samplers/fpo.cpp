@@ -78,10 +78,14 @@ class Optimizer {
   }
 
   /// One sweep: every point once, in index order. Returns how many moved.
-  std::size_t sweep() {
+  /// Reports `done` plus the points visited so far in this sweep.
+  std::size_t sweep(ProgressReporter& progress, double done) {
     std::size_t moved = 0;
     std::vector<std::uint32_t> neighbours;
-    for (std::uint32_t i = 0; i < points_.size(); ++i) moved += move(i, neighbours);
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
+      progress.update(done + i);
+      moved += move(i, neighbours);
+    }
     return moved;
   }
 
@@ -242,14 +246,19 @@ FpoResult fpo_optimize(const PointSet<2>& start, const Domain<2>& domain, const 
   Optimizer optimizer(start, domain);
   FpoResult result;
   result.sweeps.push_back(optimizer.measure());
+  // Point visits out of the sweep budget: a run that converges early ends
+  // with a jump to the total.
+  const auto n = static_cast<double>(start.size());
+  ProgressReporter progress(params.progress, n * params.sweeps);
   for (int s = 0; s < params.sweeps; ++s) {
-    const std::size_t moved = optimizer.sweep();
+    const std::size_t moved = optimizer.sweep(progress, n * s);
     FpoSweep now = optimizer.measure();
     now.moved = moved;
     const double before = result.sweeps.back().min_distance;
     result.sweeps.push_back(now);
     if (moved == 0 || !(now.min_distance > before * (1.0 + params.tolerance))) break;
   }
+  progress.finish();
   result.points = optimizer.points();
   return result;
 }

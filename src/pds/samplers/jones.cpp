@@ -244,7 +244,8 @@ class JonesSampler {
         cells_(domain),
         grid_(Grid<2>::for_radius(domain, params.radius)),
         rng_(seed),
-        radius_(params.radius) {}
+        radius_(params.radius),
+        progress_(params.progress) {}
 
   PointSet<2> run() {
     insert(uniform_point(rng_, domain_), -1);
@@ -254,7 +255,13 @@ class JonesSampler {
     // missing this often in a row means the geometry broke down numerically.
     constexpr int kMaxMisses = 10000;
     int empty_picks = 0;
+    // Samples against typical_count early on, the share of
+    // the area covered late (it reaches all of it as the set completes).
+    const double expected = typical_count(domain_.volume(), radius_, 2);
+    const double area = tree_.total();
+    ProgressReporter progress(progress_, expected);
     while (tree_.total() > 0.0) {
+      progress.update(expected * std::max(static_cast<double>(grid_.size()) / expected, 1.0 - tree_.total() / area));
       const std::size_t k = tree_.find(rng_.uniform() * tree_.total());
       if (!(tree_.weight(k) > 0.0)) {
         // Only rounding at a leaf's boundary picks an empty leaf.
@@ -271,6 +278,7 @@ class JonesSampler {
       }
       insert(*dart, static_cast<std::int32_t>(k));
     }
+    progress.finish();
     // The grid holds the only copy of the points; free the triangulation first.
     cells_.clear();
     return grid_.points();
@@ -453,6 +461,7 @@ class JonesSampler {
   Grid<2> grid_;  // the points; exact distance check on the stored coordinates
   Rng rng_;
   double radius_;
+  Progress progress_;
   detail::SumTree tree_;
   std::vector<std::uint16_t> misses_;
   std::vector<std::int32_t> changed_;

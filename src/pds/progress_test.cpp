@@ -1,0 +1,125 @@
+#include "pds/progress.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "pds/analysis/report.h"
+#include "pds/registry.h"
+
+namespace pds {
+namespace {
+
+struct Report {
+  double done, total;
+};
+
+// The methods that report, each on a request of a fraction of a second.
+GenerateRequest request_for(const std::string& method) {
+  GenerateRequest r;
+  r.torus = true;
+  r.seed = 5;
+  if (method == "fpo" || method == "best-candidate")
+    r.count = method == "fpo" ? 500 : 2000;
+  else
+    r.radius = 0.01;
+  return r;
+}
+
+class ProgressOfMethod : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ProgressOfMethod, ReportsMonotoneProgressToTheTotalAndChangesNoByte) {
+  GenerateRequest r = request_for(GetParam());
+  std::vector<Report> reports;
+  r.progress.report = [&](double done, double total) {
+    reports.push_back({done, total});
+    return true;
+  };
+  const PointCloud with = generate(GetParam(), r);
+  ASSERT_GE(reports.size(), 10u);
+  EXPECT_EQ(reports.front().done, 0.0);
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    EXPECT_EQ(reports[i].total, reports.front().total);
+    EXPECT_LE(reports[i].done, reports[i].total);
+    if (i > 0) {
+      EXPECT_GE(reports[i].done, reports[i - 1].done) << "report " << i;
+    }
+  }
+  EXPECT_EQ(reports.back().done, reports.back().total);
+  EXPECT_LE(reports.size(), 1000u + 1000u);  // throttled to about a thousand
+  r.progress = {};
+  EXPECT_EQ(generate(GetParam(), r), with);  // progress changes no byte
+}
+
+TEST_P(ProgressOfMethod, CancellationStopsTheRun) {
+  GenerateRequest r = request_for(GetParam());
+  int calls = 0;
+  r.progress.report = [&](double, double) { return ++calls < 5; };
+  EXPECT_THROW(generate(GetParam(), r), Cancelled);
+  EXPECT_EQ(calls, 5);  // nothing reported after the refusal
+}
+
+std::vector<std::string> reporting_methods() {
+  std::vector<std::string> out = {"best-candidate", "dart-throwing"};
+  for (const Method& m : methods())
+    if (m.name == "jones" || m.name == "fpo") out.push_back(m.name);  // with the CGAL component
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, ProgressOfMethod, ::testing::ValuesIn(reporting_methods()),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           for (char& c : n)
+                             if (c == '-') c = '_';
+                           return n;
+                         });
+
+TEST(ProgressOfAnalysis, OneUnitPerSetThenSpectrumAndPairCorrelation) {
+  GenerateRequest r;
+  r.count = 200;
+  r.torus = true;
+  std::vector<PointSet<2>> sets;
+  for (std::uint64_t seed = 0; seed < 5; ++seed) {
+    r.seed = seed;
+    sets.push_back(generate("jittered", r).as<2>());
+  }
+  std::vector<Report> reports;
+  AnalysisOptions options;
+  options.max_frequency = 8;
+  options.progress.report = [&](double done, double total) {
+    reports.push_back({done, total});
+    return true;
+  };
+  const Domain<2> domain = Domain<2>::unit(true);
+  analyze<2>(sets, domain, options);
+  ASSERT_EQ(reports.size(), 8u);  // 0, sets 1-4, spectrum, pair correlation, the end
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    EXPECT_EQ(reports[i].done, static_cast<double>(i));
+    EXPECT_EQ(reports[i].total, 7.0);
+  }
+  options.progress.report = [](double done, double) { return done < 2; };
+  EXPECT_THROW(analyze<2>(sets, domain, options), Cancelled);
+}
+
+TEST(ProgressPartOf, MapsEachPartIntoTheWhole) {
+  std::vector<Report> reports;
+  Progress whole{[&](double done, double total) {
+    reports.push_back({done, total});
+    return true;
+  }};
+  for (std::size_t part = 0; part < 3; ++part) {
+    ProgressReporter reporter(part_of(whole, part, 3), 10);
+    reporter.update(5);
+    reporter.finish();
+  }
+  ASSERT_EQ(reports.size(), 9u);
+  EXPECT_EQ(reports[1].done, 0.5);
+  EXPECT_EQ(reports[4].done, 1.5);
+  EXPECT_EQ(reports[8].done, 3.0);
+  EXPECT_EQ(reports[8].total, 3.0);
+  EXPECT_FALSE(part_of(Progress{}, 0, 3));  // no callback, nothing to call
+}
+
+}  // namespace
+}  // namespace pds

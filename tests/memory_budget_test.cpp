@@ -1,0 +1,58 @@
+// --max-memory: every method's estimate (pds::peak_memory_estimate, from its
+// measured memory_ratio) refuses a budget just below it before anything is
+// allocated, and runs under a budget just above it.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "pds/error.h"
+#include "pds/registry.h"
+
+namespace pds {
+namespace {
+
+GenerateRequest small_request(const Method& m) {
+  GenerateRequest r;
+  r.torus = true;
+  if (m.takes_count)
+    r.count = 256;
+  else
+    r.radius = 0.05;
+  return r;
+}
+
+TEST(MemoryBudget, EveryMethodRefusesBelowItsEstimateAndRunsAbove) {
+  for (const Method& m : methods()) {
+    GenerateRequest r = small_request(m);
+    const double estimate = peak_memory_estimate(m, r);
+    ASSERT_GT(estimate, 0) << m.name;
+    r.max_memory = estimate * 0.99;
+    try {
+      generate(m.name, r);
+      ADD_FAILURE() << m.name << " ran above its budget";
+    } catch (const InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find("(--max-memory)"), std::string::npos) << e.what();
+    }
+    r.max_memory = estimate * 1.01;
+    EXPECT_NO_THROW(generate(m.name, r)) << m.name;
+  }
+}
+
+TEST(MemoryBudget, EstimateIsPointsTimesDimensionTimesTheMethodsRatio) {
+  GenerateRequest r;
+  r.dim = 3;
+  r.count = 1000;
+  const Method& random = find_method("random");
+  EXPECT_EQ(peak_memory_estimate(random, r), 1000.0 * 3 * 8 * random.memory_ratio);
+  // A request far beyond the machine is refused at once, nothing allocated.
+  r.count = 50'000'000;
+  r.max_memory = 512.0 * (1 << 20);
+  EXPECT_THROW(generate("random", r), InvalidArgument);
+  r.max_memory = -1;
+  r.count = 10;
+  EXPECT_THROW(generate("random", r), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace pds
