@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstring>
 #include <span>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -35,6 +36,8 @@
 #include "pds/point.h"
 #include "pds/registry.h"
 #ifdef PDS_WITH_RENDER
+#include "pds/detail/format.h"
+#include "pds/render/image_field.h"
 #include "pds/render/render.h"
 #endif
 
@@ -121,10 +124,9 @@ std::vector<pds::PointSet<D>> to_sets(const std::vector<InputArray>& sets) {
   return out;
 }
 
-py::array_t<double> generate(const std::string& method, std::optional<std::uint64_t> count,
-                             std::optional<double> radius, int dim, std::vector<double> lo, std::vector<double> hi,
-                             bool torus, std::uint64_t seed, int threads, std::uint64_t max_points,
-                             std::map<std::string, double> params, bool sized, bool float32) {
+pds::GenerateRequest make_request(std::optional<std::uint64_t> count, std::optional<double> radius, int dim,
+                                  std::vector<double> lo, std::vector<double> hi, bool torus, std::uint64_t seed,
+                                  int threads, std::uint64_t max_points, std::map<std::string, double> params) {
   pds::GenerateRequest request;
   request.dim = dim;
   request.lo = std::move(lo);
@@ -136,7 +138,10 @@ py::array_t<double> generate(const std::string& method, std::optional<std::uint6
   request.threads = threads;
   request.max_points = max_points;
   request.params = std::move(params);
-  request.float32 = float32;
+  return request;
+}
+
+py::array_t<double> run_request(const std::string& method, const pds::GenerateRequest& request, bool sized) {
   pds::PointCloud cloud;
   {
     py::gil_scoped_release unlocked;
@@ -147,6 +152,70 @@ py::array_t<double> generate(const std::string& method, std::optional<std::uint6
   const auto n = static_cast<py::ssize_t>(cloud.size());
   return adopt(std::move(cloud.coords), {n, cloud.dim});
 }
+
+py::array_t<double> generate(const std::string& method, std::optional<std::uint64_t> count,
+                             std::optional<double> radius, int dim, std::vector<double> lo, std::vector<double> hi,
+                             bool torus, std::uint64_t seed, int threads, std::uint64_t max_points,
+                             std::map<std::string, double> params, bool sized, bool float32) {
+  pds::GenerateRequest request =
+      make_request(count, radius, dim, std::move(lo), std::move(hi), torus, seed, threads, max_points, params);
+  request.float32 = float32;
+  return run_request(method, request, sized);
+}
+
+#ifdef PDS_WITH_RENDER
+/// A (rows, columns) array of grey levels in [0, 1], row 0 at the top, laid
+/// over the request's plane bounds.
+pds::ImageOnBounds image_over(const InputArray& a, const pds::GenerateRequest& request, const char* what) {
+  if (request.dim != pds::kPlaneDim)
+    throw pds::InvalidArgument(std::string(what) +
+                               " needs dim=2 (an image covers the plane), got dim=" + std::to_string(request.dim));
+  if (a.ndim() != 2 || a.shape(0) < 1 || a.shape(1) < 1 || a.shape(0) > std::numeric_limits<int>::max() ||
+      a.shape(1) > std::numeric_limits<int>::max())
+    throw pds::InvalidArgument(std::string(what) + " must be a non-empty array of shape (rows, columns)");
+  pds::Image image(static_cast<int>(a.shape(1)), static_cast<int>(a.shape(0)));
+  std::memcpy(image.pixels.data(), a.data(), image.pixels.size() * sizeof(double));
+  for (const double g : image.pixels)
+    if (!(g >= 0.0 && g <= 1.0))
+      throw pds::InvalidArgument(std::string(what) + ": grey levels must lie in [0, 1], got " +
+                                 pds::detail::format_number(g));
+  std::vector<double> lo, hi;
+  request.bounds(lo, hi);
+  return pds::ImageOnBounds(std::move(image), {{lo[0], lo[1]}}, {{hi[0], hi[1]}});
+}
+
+/// generate() with the constraints of docs/density.md: a density image with
+/// its radius range, a mask image, fixed points.
+py::array_t<double> generate_constrained(const std::string& method, std::optional<double> radius, int dim,
+                                         std::vector<double> lo, std::vector<double> hi, bool torus, std::uint64_t seed,
+                                         int threads, std::uint64_t max_points, std::map<std::string, double> params,
+                                         std::optional<InputArray> density,
+                                         std::optional<std::pair<double, double>> radius_range, bool invert,
+                                         std::optional<InputArray> mask, std::optional<InputArray> fixed) {
+  pds::GenerateRequest request = make_request(std::nullopt, radius, dim, std::move(lo), std::move(hi), torus, seed,
+                                              threads, max_points, std::move(params));
+  pds::RequestConstraints& c = request.constraints;
+  if (density.has_value() != radius_range.has_value())
+    throw pds::InvalidArgument(density ? "density needs radius_range=(rmin, rmax)" : "radius_range needs density");
+  if (invert && !density) throw pds::InvalidArgument("invert needs density");
+  if (density) {
+    c.rmin = radius_range->first;
+    c.rmax = radius_range->second;
+    const auto field = pds::radius_from_image(image_over(*density, request, "density"), c.rmin, c.rmax, invert);
+    c.radius = [field](const double* x) { return field({{x[0], x[1]}}); };
+  }
+  if (mask) {
+    const auto on = pds::mask_from_image(image_over(*mask, request, "mask"));
+    c.inside = [on](const double* x) { return on({{x[0], x[1]}}); };
+  }
+  if (fixed) {
+    const int d = dim_of(*fixed, "fixed");
+    c.fixed.dim = d;
+    c.fixed.coords.assign(fixed->data(), fixed->data() + fixed->shape(0) * d);
+  }
+  return run_request(method, request, false);
+}
+#endif
 
 py::list methods() {
   py::list out;
@@ -306,6 +375,12 @@ PYBIND11_MODULE(_pds, m) {
   m.def("generate", &generate, py::arg("method"), py::arg("count"), py::arg("radius"), py::arg("dim"), py::arg("lo"),
         py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"), py::arg("params"),
         py::arg("sized"), py::arg("float32") = false);
+#ifdef PDS_WITH_RENDER
+  m.def("generate_constrained", &generate_constrained, py::arg("method"), py::arg("radius"), py::arg("dim"),
+        py::arg("lo"), py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"),
+        py::arg("params"), py::arg("density"), py::arg("radius_range"), py::arg("invert"), py::arg("mask"),
+        py::arg("fixed"));
+#endif
   m.def("methods", &methods);
   m.def("periodogram", &periodogram, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
         py::arg("max_frequency"));

@@ -37,6 +37,7 @@ struct AnalyzeOptions {
   std::string scale = "log";
   double pcf_bandwidth = 0, pcf_max = 0;
   double disk_radius = 0;
+  double dot_radius = 0;
   // Outputs.
   std::string spectrum, radial, pcf, plot;
 };
@@ -106,7 +107,8 @@ AnalysisReport analyze_and_draw(const std::vector<PointSet<D>>& sets, const Doma
     throw InvalidArgument("--pcf: every set needs at least two points");
   }
   if constexpr (D == 2)
-    if (!opt.plot.empty()) plot_points(sets[0], domain, opt.plot, {.disk_radius = opt.disk_radius});
+    if (!opt.plot.empty())
+      plot_points(sets[0], domain, opt.plot, {.disk_radius = opt.disk_radius, .dot_radius = opt.dot_radius});
   return report;
 }
 
@@ -138,6 +140,8 @@ void add_analyze(CLI::App& app) {
                   "PCF kernel half-width in domain units (default 0.1 mean inter-point distances)");
   cmd->add_option("--pcf-max", opt->pcf_max, "Largest PCF distance (default 2.5 mean inter-point distances)");
   cmd->add_option("--disk-radius", opt->disk_radius, "--plot also draws disks of this radius around the points");
+  cmd->add_option("--dot-radius", opt->dot_radius,
+                  "--plot draws dots of this radius (domain units), e.g. for a stippling");
   cmd->add_option("--spectrum", opt->spectrum, "Write the averaged periodogram image (.png, .svg, .pdf)");
   cmd->add_option("--radial", opt->radial,
                   "Write the radial spectrum: CSV (frequency,power,anisotropy_db), or a plot for .png/.svg/.pdf");

@@ -1,9 +1,11 @@
 // pds generate METHOD ...: run a registered method and write the points.
 
+#include <iostream>
 #include <memory>
 
 #include "analysis_common.h"
 #include "commands.h"
+#include "constraints.h"
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/registry.h"
@@ -17,6 +19,7 @@ struct GenerateOptions {
   GenerationOptions generation;
   std::string output = "-";
   std::string dtype = "float64";
+  ConstraintOptions constraints;
 };
 
 }  // namespace
@@ -34,9 +37,11 @@ void add_generate(CLI::App& app) {
                   "bounds after rounding")
       ->check(CLI::IsMember({"float64", "float32"}))
       ->capture_default_str();
+  add_constraint_options(*cmd, opt->constraints);
 
   cmd->callback([opt] {
     GenerateRequest request = generation_request(opt->generation);
+    apply_constraint_options(opt->constraints, request);
     request.float32 = opt->dtype == "float32";
     PointCloud points;
     {
@@ -47,6 +52,9 @@ void add_generate(CLI::App& app) {
     if (opt->output != "-") interrupt_removes(temporary_path(opt->output));
     write_points(opt->output, points, opt->dtype == "float32" ? NpyType::Float32 : NpyType::Float64);
     interrupt_removes("");
+    if (const std::size_t fixed = request.constraints.fixed.size(); fixed && !opt->generation.quiet)
+      std::cerr << "pds: the first " << fixed << " of " << points.size() << " points are the fixed ones of "
+                << opt->constraints.fixed << "\n";
   });
 }
 

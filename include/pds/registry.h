@@ -10,6 +10,7 @@
 // a method is added in one place: its entry and one line in the table.
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -21,6 +22,7 @@
 #include "pds/limits.h"
 #include "pds/point.h"
 #include "pds/progress.h"
+#include "pds/samplers/constraints.h"
 
 namespace pds {
 
@@ -33,6 +35,29 @@ struct MethodParam {
   double max = 0;
   bool integer = false;
   std::string help;
+};
+
+/// SamplingConstraints (samplers/constraints.h) with the dimension known only
+/// at run time: a point is `dim` doubles. Methods with Method::constraints
+/// take them; sized by the field's [rmin, rmax] or by the request's radius.
+struct RequestConstraints {
+  std::function<double(const double*)> radius;  // r(x); empty: the request's radius
+  double rmin = 0, rmax = 0;
+  std::function<bool(const double*)> inside;  // empty: the whole domain
+  PointCloud fixed;                           // dim must be the request's (when not empty)
+
+  bool active() const { return static_cast<bool>(radius) || static_cast<bool>(inside) || fixed.size() > 0; }
+  /// The typed constraints for the domain's dimension.
+  template <int D>
+  SamplingConstraints<D> typed(const Domain<D>&) const {
+    SamplingConstraints<D> c;
+    if (radius) c.radius = [f = radius](const Point<D>& x) { return f(x.data()); };
+    c.rmin = rmin;
+    c.rmax = rmax;
+    if (inside) c.inside = [f = inside](const Point<D>& x) { return f(x.data()); };
+    c.fixed = fixed.as<D>();
+    return c;
+  }
 };
 
 /// Everything a generation request can say, with the dimension known only at
@@ -58,6 +83,7 @@ struct GenerateRequest {
   /// Progress and cancellation (pds/progress.h), reported by the methods
   /// that can run for long: best-candidate, dart-throwing, jones, fpo.
   Progress progress;
+  RequestConstraints constraints;  // radius field, mask, fixed points (docs/density.md)
 
   template <int D>
   Domain<D> domain() const;
@@ -121,6 +147,7 @@ struct Method {
   bool deterministic = false;      // ignores the seed
   bool compare = false;            // one of `pds compare`'s default rows
   bool square_torus_only = false;  // runs on tori with equal periods only (generate() refuses the rest)
+  bool constraints = false;        // takes GenerateRequest::constraints (radius field, mask, fixed points)
   DimRange dims;
   std::vector<RhoBand> rho;  // expected relative radius, where measured
   /// Peak memory a run allocates over the size of its output (8 bytes a

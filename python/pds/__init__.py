@@ -106,6 +106,11 @@ def generate(
     threads: int = 0,
     max_points: int = MAX_POINTS,
     dtype="float64",
+    density=None,
+    radius_range=None,
+    invert: bool = False,
+    mask=None,
+    fixed=None,
     **params: float,
 ) -> _np.ndarray:
     """Sample points with a registered method (the list is below).
@@ -120,10 +125,45 @@ def generate(
     float32 coordinates that keep the promises after rounding: every point
     inside the bounds and, with ``radius``, every pair at least that far apart
     (docs/point-files.md).
+
+    ``bridson`` and ``dart-throwing`` also take (docs/density.md): ``density``,
+    a (rows, columns) array of grey levels in [0, 1] laid over ``bounds``
+    (row 0 at the top; black at ``radius_range[0]``, dense, white at
+    ``radius_range[1]``; ``invert=True`` swaps them), which replaces
+    ``radius``; ``mask``, such an array whose dark pixels (< 0.5) are where
+    samples may go; ``fixed``, an (N, dim) array of points kept as the first
+    N rows of the result. No sample's centre lies within another's radius
+    (the larger of the two at their positions). The radius sizes the set:
+    ``count`` is not taken with them, nor float32.
     """
     dt = _np.dtype(dtype)
     if dt not in (_np.float64, _np.float32):
         raise ValueError(f"dtype must be float64 or float32, got {dt}")
+    if density is not None or mask is not None or fixed is not None or radius_range is not None or invert:
+        if count is not None:
+            raise ValueError(f"{method}: count is not taken with a density, a mask or fixed points (size by the radius)")
+        if dt == _np.float32:
+            raise ValueError(f"{method}: float32 is not taken with a density, a mask or fixed points (use float64)")
+        if radius_range is not None and len(radius_range) != 2:
+            raise ValueError(f"radius_range must be (rmin, rmax), got {radius_range!r}")
+        lo, hi = _bounds(bounds, dim)
+        return _pds.generate_constrained(
+            method,
+            None if radius is None else float(radius),
+            int(dim),
+            lo,
+            hi,
+            bool(torus),
+            _uint(seed, "seed"),
+            int(threads),
+            _uint(max_points, "max_points"),
+            _params(method, params),
+            None if density is None else _np.asarray(density, dtype=float),
+            None if radius_range is None else tuple(float(r) for r in radius_range),
+            bool(invert),
+            None if mask is None else _np.asarray(mask, dtype=float),
+            None if fixed is None else _np.asarray(fixed, dtype=float),
+        )
     points = _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, False,
                        dt == _np.float32)
     # float32 output holds float32 values already: the cast is exact.

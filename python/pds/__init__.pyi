@@ -22,6 +22,11 @@ def generate(
     threads: int = ...,
     max_points: int = ...,
     dtype: npt.DTypeLike = ...,
+    density: npt.ArrayLike | None = ...,
+    radius_range: tuple[float, float] | None = ...,
+    invert: bool = ...,
+    mask: npt.ArrayLike | None = ...,
+    fixed: npt.ArrayLike | None = ...,
     **params: float,
 ) -> npt.NDArray[np.float64] | npt.NDArray[np.float32]: ...
 def tile(

@@ -32,6 +32,7 @@ ImageFormat image_format_for(const std::string& path);
 struct PointPlotOptions {
   int size = 800;          // longer side of the picture, 64..8192
   double disk_radius = 0;  // > 0: also draw a disk of this radius (domain units) around each point
+  double dot_radius = 0;   // > 0: dots of this radius (domain units), as stipplings draw them; 0: automatic
   std::string title;       // drawn above the points when not empty
 };
 

@@ -181,7 +181,8 @@ void chart(cairo_t* cr, Rect area, double x0, double x1, double y0, double y1, c
   cairo_restore(cr);
 }
 
-void points_panel(cairo_t* cr, Rect area, const PointSet<2>& points, const Domain<2>& domain, double disk_radius) {
+void points_panel(cairo_t* cr, Rect area, const PointSet<2>& points, const Domain<2>& domain, double disk_radius,
+                  double dot_radius = 0) {
   const double scale = std::min(area.w / domain.extent(0), area.h / domain.extent(1));
   const double w = domain.extent(0) * scale, h = domain.extent(1) * scale;
   const double ox = area.x + (area.w - w) / 2, oy = area.y + (area.h - h) / 2;
@@ -200,7 +201,7 @@ void points_panel(cairo_t* cr, Rect area, const PointSet<2>& points, const Domai
   }
   // Dots about a tenth of the mean spacing, readable from 100 to 100k points.
   const double spacing = points.empty() ? 0.0 : std::sqrt(w * h / static_cast<double>(points.size()));
-  const double dot = std::clamp(0.12 * spacing, 0.5, 4.0);
+  const double dot = dot_radius > 0 ? dot_radius * scale : std::clamp(0.12 * spacing, 0.5, 4.0);
   cairo_set_source_rgb(cr, 0, 0, 0);
   for (const auto& p : points) {
     cairo_new_sub_path(cr);
@@ -303,7 +304,7 @@ void plot_points(const PointSet<2>& points, const Domain<2>& domain, const std::
     text(canvas.cr(), options.title, margin + width / 2.0, margin + 18, 16, 0.5, 0.0, true);
   }
   points_panel(canvas.cr(), {margin, margin + title_height, double(width), double(height)}, points, domain,
-               options.disk_radius);
+               options.disk_radius, options.dot_radius);
   canvas.finish();
 }
 

@@ -10,6 +10,7 @@
 #include "pds/limits.h"
 #include "pds/samplers/best_candidate.h"
 #include "pds/samplers/bridson.h"
+#include "pds/samplers/constrained.h"
 #include "pds/samplers/dart_throwing.h"
 #include "pds/samplers/elimination.h"
 #include "pds/samplers/sizing.h"
@@ -48,6 +49,7 @@ const Method& dart_throwing_method() {
       .min_distance = true,
       .exact_count = true,
       .compare = true,
+      .constraints = true,
       // Measured over seeds 1-5: 2D box 0.758-0.761, torus 0.750-0.753; 3D box
       // 0.795-0.803, torus 0.762-0.764 (random sequential adsorption jams at
       // 0.777 in 2D, 0.803 in 3D; a finite failure bound stops a little below).
@@ -70,6 +72,13 @@ const Method& dart_throwing_method() {
               params.all_pairs = r.param("all-pairs", 0) != 0;
               params.max_failures = static_cast<std::uint64_t>(r.param("failures", 0));
               params.progress = r.progress;
+              if (r.constraints.active()) {
+                if (params.all_pairs)
+                  throw InvalidArgument(
+                      "dart-throwing: all-pairs=1 is not taken with a density, a mask or fixed points");
+                params.radius = r.radius.value_or(0.0);
+                return dart_throwing(params, r.constraints.typed(domain), domain, r.seed);
+              }
               if (r.radius) {
                 params.radius = *r.radius;
                 return dart_throwing(params, domain, r.seed);
@@ -94,6 +103,7 @@ const Method& bridson_method() {
       .min_distance = true,
       .exact_count = true,
       .compare = true,
+      .constraints = true,
       // Measured over seeds 1-5: 2D box 0.732-0.739, torus 0.728-0.732; 3D box
       // 0.762-0.769, torus 0.738-0.745 (k = 30 leaves more gaps).
       .dims = {kMinDim, kMaxDim},
@@ -114,6 +124,12 @@ const Method& bridson_method() {
               params.k = static_cast<int>(r.param("k", 30));
               params.surface = r.param("surface", 0) != 0;
               params.count = r.count;
+              if (r.constraints.active()) {
+                if (params.surface)
+                  throw InvalidArgument("bridson: surface=1 is not taken with a density, a mask or fixed points");
+                params.radius = r.radius.value_or(0.0);
+                return bridson(params, r.constraints.typed(domain), domain, r.seed);
+              }
               if (r.radius) {
                 params.radius = *r.radius;
                 return bridson(params, domain, r.seed);

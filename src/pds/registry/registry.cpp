@@ -104,10 +104,45 @@ double GenerateRequest::param(const std::string& name, double fallback) const {
 
 namespace {
 
+// A radius field, a mask, fixed points: only where the method takes them,
+// and sized by the field's range or a radius, never by a count.
+void validate_constraints(const Method& m, const GenerateRequest& r) {
+  const RequestConstraints& c = r.constraints;
+  if (!c.active()) return;
+  if (!m.constraints) {
+    std::string takers;
+    for (const Method& t : methods())
+      if (t.constraints) takers += (takers.empty() ? "" : ", ") + t.name;
+    throw InvalidArgument(m.name + " does not take a density, a mask or fixed points (" + takers + " do)");
+  }
+  if (c.fixed.size() > 0 && c.fixed.dim != r.dim)
+    throw InvalidArgument("fixed points have dimension " + std::to_string(c.fixed.dim) + ", the request " +
+                          std::to_string(r.dim));
+  if (r.count)
+    throw InvalidArgument(m.name +
+                          ": --count is not taken with a density, a mask or fixed points (size by the radius)");
+  // Rounding would move the fixed points and could break the pair rule.
+  if (r.float32)
+    throw InvalidArgument(m.name +
+                          ": float32 output is not taken with a density, a mask or fixed points (use float64)");
+  if (!c.radius) return;
+  if (r.radius) throw InvalidArgument(m.name + ": a density takes a radius range, not --radius");
+  require_radius(c.rmin, "rmin");
+  require_radius(c.rmax, "rmax");
+  if (!(c.rmin <= c.rmax))
+    throw InvalidArgument("radius range needs rmin <= rmax, got " + detail::format_number(c.rmin) + " > " +
+                          detail::format_number(c.rmax));
+  visit_dim<kMinDim, kMaxDim>(r.dim, [&](auto d) {
+    require_radius_budget(r.domain<decltype(d)::value>(), c.rmin, r.max_points);
+    return 0;
+  });
+}
+
 void validate(const Method& m, const GenerateRequest& r) {
   if (!m.dims.contains(r.dim))
     throw InvalidArgument(m.name + ": dimension " + std::to_string(r.dim) + " is not supported (supported: " +
                           m.dims.text() + ")");
+  validate_constraints(m, r);
   if (r.dim > kMaxDim) {
     // Run-time dimensions: sequences and designs, which take a count only.
     std::vector<double> lo, hi;
@@ -146,7 +181,7 @@ void validate(const Method& m, const GenerateRequest& r) {
     require_point_budget(static_cast<double>(*r.count), r.dim, r.max_points,
                          "count " + std::to_string(*r.count) + " in dimension " + std::to_string(r.dim), 2.0);
   }
-  if (!r.count && !r.radius) {
+  if (!r.count && !r.radius && !r.constraints.radius) {
     if (m.takes_count && m.takes_radius) throw InvalidArgument(m.name + " needs --count or --radius");
     throw InvalidArgument(m.name + (m.takes_count ? " needs --count" : " needs --radius"));
   }
@@ -207,14 +242,17 @@ PointCloud run_float32(const Method& m, const GenerateRequest& request) {
 
 double peak_memory_estimate(const Method& method, const GenerateRequest& request) {
   double points = request.count ? static_cast<double>(*request.count) : 0.0;
-  if (request.radius) {
+  // A radius field sizes the set by its range: at most the count at rmin.
+  const std::optional<double> radius = request.constraints.radius ? request.constraints.rmin : request.radius;
+  if (radius) {
     std::vector<double> lo, hi;
     request.bounds(lo, hi);
     double volume = 1.0;
     for (std::size_t a = 0; a < lo.size(); ++a) volume *= hi[a] - lo[a];
-    const double typical = typical_count(volume, *request.radius, request.dim);
+    const double typical = typical_count(volume, *radius, request.dim);
     points = request.count ? std::min(points, typical) : typical;  // a count stops the run
   }
+  points += static_cast<double>(request.constraints.fixed.size());
   return points * request.dim * static_cast<double>(sizeof(double)) * method.memory_ratio;
 }
 

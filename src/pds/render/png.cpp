@@ -7,7 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <istream>
+#include <iterator>
 #include <memory>
+#include <string>
 
 #include "pds/error.h"
 
@@ -68,10 +72,48 @@ void write_png(const std::string& path, const Image& image, GreyMapping mapping)
   save(surface.get(), path);
 }
 
-Image read_png(const std::string& path) {
-  Surface s(cairo_image_surface_create_from_png(path.c_str()));
+namespace {
+
+// Cairo's reader takes bytes through a callback; this one serves a buffer.
+struct PngBytes {
+  const std::string* bytes;
+  std::size_t at = 0;
+};
+
+cairo_status_t serve(void* closure, unsigned char* data, unsigned int length) {
+  auto* in = static_cast<PngBytes*>(closure);
+  if (in->bytes->size() - in->at < length) return CAIRO_STATUS_READ_ERROR;
+  std::copy_n(in->bytes->data() + in->at, length, data);
+  in->at += length;
+  return CAIRO_STATUS_SUCCESS;
+}
+
+// The size the header declares, checked before Cairo allocates for it: a
+// few hundred bytes of PNG can declare 2^31 x 2^31 pixels.
+void check_header(const std::string& bytes, const std::string& name) {
+  const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  const auto* b = reinterpret_cast<const unsigned char*>(bytes.data());
+  if (bytes.size() < 24 || !std::equal(signature, signature + 8, b) || bytes.compare(12, 4, "IHDR") != 0)
+    throw InvalidArgument("cannot read " + name + " as PNG: no PNG signature and header");
+  const auto be32 = [&](std::size_t i) {
+    return std::uint32_t{b[i]} << 24 | std::uint32_t{b[i + 1]} << 16 | std::uint32_t{b[i + 2]} << 8 | b[i + 3];
+  };
+  const std::uint64_t width = be32(16), height = be32(20);
+  if (width == 0 || height == 0 || width > kMaxReadSide || height > kMaxReadSide || width * height > kMaxReadPixels)
+    throw InvalidArgument("cannot read " + name + " as PNG: " + std::to_string(width) + "x" + std::to_string(height) +
+                          " pixels, more than " + std::to_string(kMaxReadSide) + " a side or " +
+                          std::to_string(kMaxReadPixels) + " in all");
+}
+
+}  // namespace
+
+Image read_png(std::istream& in, const std::string& name) {
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  check_header(bytes, name);
+  PngBytes source{&bytes};
+  Surface s(cairo_image_surface_create_from_png_stream(serve, &source));
   if (cairo_surface_status(s.get()) != CAIRO_STATUS_SUCCESS)
-    throw InvalidArgument("cannot read " + path + " as PNG: " + cairo_status_to_string(cairo_surface_status(s.get())));
+    throw InvalidArgument("cannot read " + name + " as PNG: " + cairo_status_to_string(cairo_surface_status(s.get())));
   Surface rgb = make_surface(cairo_image_surface_get_width(s.get()), cairo_image_surface_get_height(s.get()));
   {
     Context cr(cairo_create(rgb.get()));
@@ -87,6 +129,12 @@ Image read_png(const std::string& path) {
     for (int x = 0; x < image.width; ++x) image.at(x, y) = ((row[x] >> 8) & 0xff) / 255.0;
   }
   return image;
+}
+
+Image read_png(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidArgument("cannot read " + path + " as PNG: cannot open the file");
+  return read_png(in, path);
 }
 
 Image log_spectrum(const Image& spectrum) {
