@@ -453,7 +453,7 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, std::uint64_t se
 
 // Count mode. A finished set at the radius holds more than the count; taking
 // a subset of it thins the pattern (a uniformly random subset adds white
-// noise: low-frequency power 0.30 against 0.08 at the method's own radius, 2D,
+// noise: low-frequency power 0.30 against 0.11 at the method's own radius, 2D box,
 // 1024 points). So the radius is searched upward (the count falls as r^-D)
 // until a finished set holds at most kCountSurplus more than the count, by
 // the count's scaling and bisection between a radius that holds the count and
