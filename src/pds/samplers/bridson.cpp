@@ -465,12 +465,12 @@ constexpr double kCountSurplus = 0.02;
 constexpr int kCountSearchSteps = 8;
 
 template <int D>
-PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<D>& domain,
-                          const BridsonParams& params, std::uint64_t seed) {
+PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<D>& domain, const BridsonParams& params,
+                          std::uint64_t seed) {
   const auto n = static_cast<double>(count);
+  const double most = n * (1.0 + kCountSurplus);
   double holds = params.radius, fails = std::numeric_limits<double>::infinity();
-  for (int step = 0; step < kCountSearchSteps && static_cast<double>(points.size()) > n * (1.0 + kCountSurplus);
-       ++step) {
+  for (int step = 0; step != kCountSearchSteps && static_cast<double>(points.size()) > most; ++step) {
     // Aim at half the allowed surplus, inside the bracket.
     double next = holds * std::pow(static_cast<double>(points.size()) / (n * (1.0 + kCountSurplus / 2)), 1.0 / D);
     if (!(next < fails)) next = std::sqrt(holds * fails);
