@@ -116,9 +116,8 @@ double low_frequency_power(const std::function<PointSet<2>(std::uint64_t seed)>&
 TEST(Bridson, CountKeepsTheSpectrumOfAFinishedSet) {
   const auto domain = Domain<2>::unit(true);
   constexpr std::uint64_t n = 512;
-  const double own = low_frequency_power([&](std::uint64_t seed) {
-    return bridson<2>({.radius = radius_for_count(n, domain, 0.73)}, domain, seed);
-  });
+  const double own = low_frequency_power(
+      [&](std::uint64_t seed) { return bridson<2>({.radius = radius_for_count(n, domain, 0.73)}, domain, seed); });
   const double counted = low_frequency_power([&](std::uint64_t seed) {
     return bridson<2>({.radius = radius_for_count(n, domain, kBridsonCountRho), .count = n}, domain, seed);
   });

@@ -335,9 +335,10 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   return eliminate(candidates, params.count, domain, params.weights, params.progressive);
 }
 
-#define PDS_INSTANTIATE(D)                                                                               \
-  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t); \
-  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, bool);
+#define PDS_INSTANTIATE(D)                                                                                          \
+  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                   \
+  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, \
+                                    bool);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
