@@ -7,7 +7,6 @@
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/registry.h"
-#include "terminal.h"
 
 namespace pds::cli {
 namespace {
@@ -38,15 +37,8 @@ void add_generate(CLI::App& app) {
   cmd->callback([opt] {
     GenerateRequest request = generation_request(opt->generation);
     request.float32 = opt->dtype == "float32";
-    PointCloud points;
-    {
-      const ProgressBar bar(opt->method, opt->generation.quiet);
-      request.progress = bar.progress();
-      points = generate(opt->method, request);
-    }
-    if (opt->output != "-") interrupt_removes(temporary_path(opt->output));
-    write_points(opt->output, points, opt->dtype == "float32" ? NpyType::Float32 : NpyType::Float64);
-    interrupt_removes("");
+    const PointCloud points = generate_with_progress(opt->method, request, opt->generation.quiet);
+    write_output(opt->output, points, opt->dtype == "float32" ? NpyType::Float32 : NpyType::Float64);
   });
 }
 
