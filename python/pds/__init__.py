@@ -146,18 +146,10 @@ def generate(
             raise ValueError(f"{method}: float32 is not taken with a density, a mask or fixed points (use float64)")
         if radius_range is not None and len(radius_range) != 2:
             raise ValueError(f"radius_range must be (rmin, rmax), got {radius_range!r}")
-        lo, hi = _bounds(bounds, dim)
         return _pds.generate_constrained(
             method,
             None if radius is None else float(radius),
-            int(dim),
-            lo,
-            hi,
-            bool(torus),
-            _uint(seed, "seed"),
-            int(threads),
-            _uint(max_points, "max_points"),
-            _params(method, params),
+            *_request_args(method, dim, bounds, torus, seed, threads, max_points, params),
             None if density is None else _np.asarray(density, dtype=float),
             None if radius_range is None else tuple(float(r) for r in radius_range),
             bool(invert),
@@ -170,22 +162,21 @@ def generate(
     return points.astype(_np.float32) if dt == _np.float32 else points
 
 
-def _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, sized, float32=False):
+def _request_args(method, dim, bounds, torus, seed, threads, max_points, params):
+    """The arguments every _pds generation call takes from dim to params."""
     if not isinstance(method, str):
         raise TypeError(f"method must be a str, got {type(method).__name__}")
     lo, hi = _bounds(bounds, dim)
+    return (int(dim), lo, hi, bool(torus), _uint(seed, "seed"), int(threads), _uint(max_points, "max_points"),
+            _params(method, params))
+
+
+def _generate(method, count, radius, dim, bounds, torus, seed, threads, max_points, params, sized, float32=False):
     return _pds.generate(
         method,
         _uint(count, "count"),
         None if radius is None else float(radius),
-        int(dim),
-        lo,
-        hi,
-        bool(torus),
-        _uint(seed, "seed"),
-        int(threads),
-        _uint(max_points, "max_points"),
-        _params(method, params),
+        *_request_args(method, dim, bounds, torus, seed, threads, max_points, params),
         sized,
         float32,
     )
