@@ -33,6 +33,25 @@ auto with_shrinking_radius(double& radius, Sample&& sample) {
   }
 }
 
+// The three ways a radius-driven sampler runs: under constraints (a density,
+// a mask or fixed points; the radius, if any, as given), at --radius, or at
+// the radius of relative radius `rho` for --count alone.
+// `sample(params)` and `constrained(params)` call the sampler.
+template <class Params, int D, class Sample, class Constrained>
+PointSet<D> run_radius_method(const GenerateRequest& r, const Domain<D>& domain, Params& params, double rho,
+                             Sample&& sample, Constrained&& constrained) {
+  if (r.constraints.active()) {
+    params.radius = r.radius.value_or(0.0);
+    return constrained(params);
+  }
+  if (r.radius) {
+    params.radius = *r.radius;
+    return sample(params);
+  }
+  params.radius = radius_for_count(*r.count, domain, rho);
+  return with_shrinking_radius(params.radius, [&] { return sample(params); });
+}
+
 }  // namespace
 
 const Method& dart_throwing_method() {
@@ -72,19 +91,12 @@ const Method& dart_throwing_method() {
               params.all_pairs = r.param("all-pairs", 0) != 0;
               params.max_failures = static_cast<std::uint64_t>(r.param("failures", 0));
               params.progress = r.progress;
-              if (r.constraints.active()) {
-                if (params.all_pairs)
-                  throw InvalidArgument(
-                      "dart-throwing: all-pairs=1 is not taken with a density, a mask or fixed points");
-                params.radius = r.radius.value_or(0.0);
-                return dart_throwing(params, r.constraints.typed(domain), domain, r.seed);
-              }
-              if (r.radius) {
-                params.radius = *r.radius;
-                return dart_throwing(params, domain, r.seed);
-              }
-              params.radius = radius_for_count(*r.count, domain, r.param("rho", kDartCountRho));
-              return with_shrinking_radius(params.radius, [&] { return dart_throwing(params, domain, r.seed); });
+              if (r.constraints.active() && params.all_pairs)
+                throw InvalidArgument("dart-throwing: all-pairs=1 is not taken with a density, a mask or fixed points");
+              return run_radius_method(
+                  r, domain, params, r.param("rho", kDartCountRho),
+                  [&](const auto& p) { return dart_throwing(p, domain, r.seed); },
+                  [&](const auto& p) { return dart_throwing(p, r.constraints.typed(domain), domain, r.seed); });
             });
           },
   };
@@ -124,18 +136,12 @@ const Method& bridson_method() {
               params.k = static_cast<int>(r.param("k", 30));
               params.surface = r.param("surface", 0) != 0;
               params.count = r.count;
-              if (r.constraints.active()) {
-                if (params.surface)
-                  throw InvalidArgument("bridson: surface=1 is not taken with a density, a mask or fixed points");
-                params.radius = r.radius.value_or(0.0);
-                return bridson(params, r.constraints.typed(domain), domain, r.seed);
-              }
-              if (r.radius) {
-                params.radius = *r.radius;
-                return bridson(params, domain, r.seed);
-              }
-              params.radius = radius_for_count(*r.count, domain, r.param("rho", kBridsonCountRho));
-              return with_shrinking_radius(params.radius, [&] { return bridson(params, domain, r.seed); });
+              if (r.constraints.active() && params.surface)
+                throw InvalidArgument("bridson: surface=1 is not taken with a density, a mask or fixed points");
+              return run_radius_method(
+                  r, domain, params, r.param("rho", kBridsonCountRho),
+                  [&](const auto& p) { return bridson(p, domain, r.seed); },
+                  [&](const auto& p) { return bridson(p, r.constraints.typed(domain), domain, r.seed); });
             });
           },
   };
