@@ -1,0 +1,213 @@
+// pds unbounded / pds chunks: samples of the unbounded, chunk-invariant field
+// (pds/samplers/unbounded.h, docs/unbounded.md) in one region, or in a grid
+// of chunks written one NPY file each plus a JSON manifest.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "pds/detail/format.h"
+#include "pds/error.h"
+#include "pds/io/point_file.h"
+#include "pds/limits.h"
+#include "pds/point.h"
+#include "pds/samplers/unbounded.h"
+
+namespace pds::cli {
+namespace {
+
+struct UnboundedOptions {
+  double radius = 0.0;
+  std::uint64_t seed = 0;
+  std::vector<double> region;  // x0,y0[,z0],x1,y1[,z1]
+  double darts_per_cell = UnboundedParams{}.darts_per_cell;
+  std::uint64_t max_points = kDefaultMaxPoints;
+  double chunk = 0.0;  // pds chunks only
+  std::string output;
+};
+
+void add_field_options(CLI::App& cmd, UnboundedOptions& o) {
+  cmd.add_option("--radius,-r", o.radius, "Minimum distance between any two samples")->required();
+  cmd.add_option("--seed,-s", o.seed, "Seed of the field: the same seed gives the same set everywhere")
+      ->capture_default_str();
+  cmd.add_option("--region", o.region, "Box as lo then hi corners, x0,y0,x1,y1 (2D) or x0,y0,z0,x1,y1,z1 (3D)")
+      ->delimiter(',')
+      ->required();
+  cmd.add_option("--darts-per-cell", o.darts_per_cell,
+                 "Expected darts a cell of edge r/sqrt(D): more darts, fewer gaps (docs/unbounded.md)")
+      ->capture_default_str();
+  cmd.add_option("--max-points", o.max_points, "Refuse regions that could hold more points")->capture_default_str();
+}
+
+int region_dim(const UnboundedOptions& o) {
+  if (o.region.size() != 4 && o.region.size() != 6)
+    throw InvalidArgument("--region needs 4 values (2D) or 6 (3D): lo corner then hi corner, got " +
+                          std::to_string(o.region.size()));
+  return static_cast<int>(o.region.size() / 2);
+}
+
+template <int D>
+Domain<D> region_of(const UnboundedOptions& o) {
+  Domain<D> region;
+  for (int a = 0; a < D; ++a) {
+    region.lo[a] = o.region[static_cast<std::size_t>(a)];
+    region.hi[a] = o.region[static_cast<std::size_t>(a + D)];
+    validate_axis(a, region.lo[a], region.hi[a]);
+  }
+  return region;
+}
+
+template <int D>
+UnboundedField<D> field_of(const UnboundedOptions& o) {
+  return UnboundedField<D>({.radius = o.radius, .darts_per_cell = o.darts_per_cell, .max_points = o.max_points},
+                           o.seed);
+}
+
+nlohmann::ordered_json stats_json(const UnboundedStats& s) {
+  nlohmann::ordered_json j;
+  j["cells_touched"] = s.cells_touched;
+  j["darts_settled"] = s.darts_settled;
+  j["max_depth"] = s.max_depth;
+  j["margin_cells"] = s.margin_cells;
+  return j;
+}
+
+template <int D>
+void run_unbounded(const UnboundedOptions& o) {
+  const UnboundedField<D> field = field_of<D>(o);
+  UnboundedStats stats;
+  const PointSet<D> points = field.sample(region_of<D>(o), &stats);
+  write_points(o.output, PointCloud::from(points));
+  if (o.output == "-") return;
+  nlohmann::ordered_json out;
+  out["file"] = o.output;
+  out["count"] = points.size();
+  out["stats"] = stats_json(stats);
+  std::cout << out.dump(2) << std::endl;
+}
+
+/// Chunk k of `n` along an axis: cut points from the index alone, so that
+/// neighbouring chunks share their seam exactly.
+double cut(double lo, double hi, double size, std::int64_t k, std::int64_t n) {
+  return k >= n ? hi : lo + size * static_cast<double>(k);
+}
+
+template <int D>
+void run_chunks(const UnboundedOptions& o) {
+  const UnboundedField<D> field = field_of<D>(o);
+  const Domain<D> region = region_of<D>(o);
+  if (!(std::isfinite(o.chunk) && o.chunk > 0.0))
+    throw InvalidArgument("--chunk: " + detail::format_number(o.chunk) + " is not a positive finite size");
+  std::array<std::int64_t, D> n{};
+  double total = 1.0;
+  for (int a = 0; a < D; ++a) {
+    const double count = std::ceil(region.extent(a) / o.chunk);
+    total *= count;
+    if (!(total <= 1e6))
+      throw InvalidArgument("--chunk: " + detail::format_number(o.chunk) + " cuts the region into more than 10^6 chunks");
+    n[a] = static_cast<std::int64_t>(count);
+    // A last chunk that rounding leaves empty is not made.
+    if (n[a] > 1 && !(cut(region.lo[a], region.hi[a], o.chunk, n[a] - 1, n[a]) < region.hi[a])) --n[a];
+  }
+  // The whole region's budget is checked once, before any file is written.
+  require_point_budget(packing_count(region.volume(), o.radius, D), D, o.max_points,
+                       "radius " + detail::format_number(o.radius) + " over a region of volume " +
+                           detail::format_number(region.volume()),
+                       1.0);
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(o.output, ec);
+  if (!fs::is_directory(o.output)) throw Failure("cannot create the directory " + o.output);
+
+  nlohmann::ordered_json manifest;
+  manifest["format"] = "pds-chunks";
+  manifest["version"] = 1;
+  manifest["method"] = "unbounded";
+  manifest["dim"] = D;
+  manifest["radius"] = o.radius;
+  manifest["seed"] = o.seed;
+  manifest["darts_per_cell"] = o.darts_per_cell;
+  manifest["region"] = {{"lo", std::vector<double>(region.lo.begin(), region.lo.end())},
+                        {"hi", std::vector<double>(region.hi.begin(), region.hi.end())}};
+  manifest["chunk"] = o.chunk;
+  manifest["order"] = "each file: lexicographic in the coordinates; chunk [lo, hi) half-open";
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  std::uint64_t count = 0;
+  int max_margin = 0, max_depth = 0;
+  std::array<std::int64_t, D> i{};
+  while (true) {
+    Domain<D> part;
+    std::string name = "chunk";
+    for (int a = 0; a < D; ++a) {
+      part.lo[a] = cut(region.lo[a], region.hi[a], o.chunk, i[a], n[a]);
+      part.hi[a] = cut(region.lo[a], region.hi[a], o.chunk, i[a] + 1, n[a]);
+      name += "_" + std::to_string(i[a]);
+    }
+    name += ".npy";
+    UnboundedStats stats;
+    const PointSet<D> points = field.sample(part, &stats);
+    write_points((fs::path(o.output) / name).string(), PointCloud::from(points));
+    max_margin = std::max(max_margin, stats.margin_cells);
+    max_depth = std::max(max_depth, stats.max_depth);
+    count += points.size();
+    nlohmann::ordered_json entry;
+    entry["file"] = name;
+    entry["index"] = std::vector<std::int64_t>(i.begin(), i.end());
+    entry["lo"] = std::vector<double>(part.lo.begin(), part.lo.end());
+    entry["hi"] = std::vector<double>(part.hi.begin(), part.hi.end());
+    entry["count"] = points.size();
+    list.push_back(entry);
+    int a = 0;
+    while (a < D && i[a] == n[a] - 1) i[a++] = 0;
+    if (a == D) break;
+    ++i[a];
+  }
+  manifest["count"] = count;
+  manifest["max_margin_cells"] = max_margin;
+  manifest["max_depth"] = max_depth;
+  manifest["chunks"] = list;
+  const std::string path = (fs::path(o.output) / "manifest.json").string();
+  std::ofstream file(path);
+  file << manifest.dump(2) << '\n';
+  if (!file.flush()) throw Failure("cannot write " + path);
+  nlohmann::ordered_json out;
+  out["manifest"] = path;
+  out["chunks"] = list.size();
+  out["count"] = count;
+  std::cout << out.dump(2) << std::endl;
+}
+
+}  // namespace
+
+void add_unbounded(CLI::App& app) {
+  auto opt = std::make_shared<UnboundedOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "unbounded", "Samples of the unbounded Poisson disk field of a seed inside a region (docs/unbounded.md)");
+  add_field_options(*cmd, *opt);
+  cmd->add_option("--output,-o", opt->output, "Output file (.npy or .csv); '-' for CSV on stdout")->required();
+  cmd->callback([opt] {
+    if (region_dim(*opt) == 2)
+      run_unbounded<2>(*opt);
+    else
+      run_unbounded<3>(*opt);
+  });
+
+  auto chunks = std::make_shared<UnboundedOptions>();
+  CLI::App* ccmd = app.add_subcommand(
+      "chunks", "The unbounded field over a region in chunks: one NPY per chunk and manifest.json in a directory");
+  add_field_options(*ccmd, *chunks);
+  ccmd->add_option("--chunk", chunks->chunk, "Chunk edge (the last chunk along an axis is clipped)")->required();
+  ccmd->add_option("--output,-o", chunks->output, "Output directory")->required();
+  ccmd->callback([chunks] {
+    if (region_dim(*chunks) == 2)
+      run_chunks<2>(*chunks);
+    else
+      run_chunks<3>(*chunks);
+  });
+}
+
+}  // namespace pds::cli
