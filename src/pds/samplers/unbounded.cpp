@@ -314,7 +314,9 @@ PointSet<D> UnboundedField<D>::sample(const Domain<D>& region, UnboundedStats* s
   require_point_budget(packing_count(region.volume(), params_.radius, D), D, params_.max_points,
                        "radius " + detail::format_number(params_.radius) + " over a region of volume " +
                            detail::format_number(region.volume()),
-                       64.0);  // the memo holds about a kilobyte a sample (docs/unbounded.md)
+                       // The memo's measured bytes a sample over D doubles (1.3 KB in 2D, 6.6 KB
+                       // in 3D at 8 darts a cell; docs/unbounded.md), with margin.
+                       D == 2 ? 96.0 : 320.0);
 
   Settler<D> settler(params_, seed_, edge_, lo, hi);
   const auto for_each_cell = [&](auto&& f) {

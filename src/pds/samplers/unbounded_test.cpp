@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 #include "nn_statistics.h"
@@ -92,6 +93,27 @@ TEST(Unbounded, ChunksGiveTheSameBytesAsTheWholeRegion3D) {
   EXPECT_TRUE(same_bytes(whole, union_of_chunks(field, chunks(region, {2, 2, 2}, 3))));
   EXPECT_TRUE(same_bytes(whole, union_of_chunks(field, chunks(region, {3, 1, 2}, 0))));
   EXPECT_GE(min_distance_brute_force(whole, region).distance, 1.0);
+}
+
+// The object is immutable: chunks taken in a shuffled order by 4 threads give
+// the same union as one thread.
+TEST(Unbounded, ThreadsShareOneField) {
+  const UnboundedField<2> field({.radius = 1.0}, 23);
+  const auto region = box<2>({{-10.0, -10.0}}, {{20.0, 15.0}});
+  const auto parts = chunks(region, {6, 5}, 31);
+  std::vector<PointSet<2>> results(parts.size());
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      for (std::size_t k = static_cast<std::size_t>(t); k < parts.size(); k += 4) results[k] = field.sample(parts[k]);
+    });
+  for (auto& thread : threads) thread.join();
+  PointSet<2> all;
+  for (const auto& r : results) all.insert(all.end(), r.begin(), r.end());
+  std::sort(all.begin(), all.end(), [](const Point<2>& a, const Point<2>& b) {
+    return static_cast<const std::array<double, 2>&>(a) < static_cast<const std::array<double, 2>&>(b);
+  });
+  EXPECT_TRUE(same_bytes(field.sample(region), all));
 }
 
 // A region inside another gives exactly the larger one's points that lie in it.
