@@ -8,6 +8,8 @@ source "$(dirname "$0")/cli_lib.sh"
 expect_exit 0 "" -- unbounded -r 1 -s 5 --region -3.5,2,27,19 -o "$tmp/whole.npy"
 expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 6.25 -o "$tmp/chunks"
 expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 40 -o "$tmp/one"
+expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 6.25 -t 1 -o "$tmp/serial"
+expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 6.25 -t 3 -o "$tmp/threads"
 expect_exit 0 "" -- unbounded -r 1 -s 6 --region -3.5,2,27,19 -o "$tmp/other.npy"
 expect_exit 0 "" -- unbounded -r 1 -s 5 --region 0,0,0,4,4,3 -o "$tmp/cube.csv"
 
@@ -39,6 +41,8 @@ print('same' if sorted(union) == whole and sorted(whole) == whole and len(whole)
 PY
 }
 if [[ $(check "$tmp/whole.npy" "$tmp/chunks") == same ]]; then ok; else bad "chunks differ from the whole region"; fi
+if diff -r "$tmp/serial" "$tmp/threads" >/dev/null && diff -r "$tmp/serial" "$tmp/chunks" >/dev/null; then ok; else bad "threads changed the chunk files"; fi
+if [[ $(ls "$tmp/chunks" | wc -l) -eq 16 ]]; then ok; else bad "expected 15 chunks and a manifest"; fi
 if [[ $(check "$tmp/whole.npy" "$tmp/one") == same ]]; then ok; else bad "one chunk differs from the whole region"; fi
 if [[ $(check "$tmp/other.npy" "$tmp/chunks") == different ]]; then ok; else bad "another seed gave the same set"; fi
 if [[ $(head -1 "$tmp/cube.csv") == x,y,z && $(wc -l <"$tmp/cube.csv") -gt 20 ]]; then ok; else bad "3D region"; fi

@@ -14,6 +14,7 @@
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/limits.h"
+#include "pds/parallel.h"
 #include "pds/point.h"
 #include "pds/samplers/unbounded.h"
 
@@ -27,6 +28,7 @@ struct UnboundedOptions {
   double darts_per_cell = UnboundedParams{}.darts_per_cell;
   std::uint64_t max_points = kDefaultMaxPoints;
   double chunk = 0.0;  // pds chunks only
+  int threads = 0;     // pds chunks only
   std::string output;
 };
 
@@ -48,6 +50,11 @@ int region_dim(const UnboundedOptions& o) {
     throw InvalidArgument("--region needs 4 values (2D) or 6 (3D): lo corner then hi corner, got " +
                           std::to_string(o.region.size()));
   return static_cast<int>(o.region.size() / 2);
+}
+
+/// Runs f2 or f3 for the dimension --region gives.
+void by_dim(const UnboundedOptions& o, void (*f2)(const UnboundedOptions&), void (*f3)(const UnboundedOptions&)) {
+  (region_dim(o) == 2 ? f2 : f3)(o);
 }
 
 template <int D>
@@ -135,36 +142,52 @@ void run_chunks(const UnboundedOptions& o) {
                         {"hi", std::vector<double>(region.hi.begin(), region.hi.end())}};
   manifest["chunk"] = o.chunk;
   manifest["order"] = "each file: lexicographic in the coordinates; chunk [lo, hi) half-open";
-  nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  std::uint64_t count = 0;
-  int max_margin = 0, max_depth = 0;
+  // The chunks in index order (the first axis fastest), then sampled and
+  // written on up to --threads threads, each chunk to its own file.
+  std::vector<Domain<D>> parts;
+  std::vector<std::array<std::int64_t, D>> indices;
   std::array<std::int64_t, D> i{};
   while (true) {
     Domain<D> part;
-    std::string name = "chunk";
     for (int a = 0; a < D; ++a) {
       part.lo[a] = cut(region.lo[a], region.hi[a], o.chunk, i[a], n[a]);
       part.hi[a] = cut(region.lo[a], region.hi[a], o.chunk, i[a] + 1, n[a]);
-      name += "_" + std::to_string(i[a]);
     }
-    name += ".npy";
-    UnboundedStats stats;
-    const PointSet<D> points = field.sample(part, &stats);
-    write_points((fs::path(o.output) / name).string(), PointCloud::from(points));
-    max_margin = std::max(max_margin, stats.margin_cells);
-    max_depth = std::max(max_depth, stats.max_depth);
-    count += points.size();
-    nlohmann::ordered_json entry;
-    entry["file"] = name;
-    entry["index"] = std::vector<std::int64_t>(i.begin(), i.end());
-    entry["lo"] = std::vector<double>(part.lo.begin(), part.lo.end());
-    entry["hi"] = std::vector<double>(part.hi.begin(), part.hi.end());
-    entry["count"] = points.size();
-    list.push_back(entry);
+    parts.push_back(part);
+    indices.push_back(i);
     int a = 0;
     while (a < D && i[a] == n[a] - 1) i[a++] = 0;
     if (a == D) break;
     ++i[a];
+  }
+  const auto name_of = [](const std::array<std::int64_t, D>& index) {
+    std::string name = "chunk";
+    for (std::int64_t k : index) name += "_" + std::to_string(k);
+    return name + ".npy";
+  };
+  std::vector<std::size_t> counts(parts.size());
+  std::vector<UnboundedStats> stats(parts.size());
+  parallel_for(0, parts.size(), 1, o.threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const PointSet<D> points = field.sample(parts[k], &stats[k]);
+      write_points((fs::path(o.output) / name_of(indices[k])).string(), PointCloud::from(points));
+      counts[k] = points.size();
+    }
+  });
+  std::uint64_t count = 0;
+  int max_margin = 0, max_depth = 0;
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    max_margin = std::max(max_margin, stats[k].margin_cells);
+    max_depth = std::max(max_depth, stats[k].max_depth);
+    count += counts[k];
+    nlohmann::ordered_json entry;
+    entry["file"] = name_of(indices[k]);
+    entry["index"] = std::vector<std::int64_t>(indices[k].begin(), indices[k].end());
+    entry["lo"] = std::vector<double>(parts[k].lo.begin(), parts[k].lo.end());
+    entry["hi"] = std::vector<double>(parts[k].hi.begin(), parts[k].hi.end());
+    entry["count"] = counts[k];
+    list.push_back(entry);
   }
   manifest["count"] = count;
   manifest["max_margin_cells"] = max_margin;
@@ -189,12 +212,7 @@ void add_unbounded(CLI::App& app) {
       "unbounded", "Samples of the unbounded Poisson disk field of a seed inside a region (docs/unbounded.md)");
   add_field_options(*cmd, *opt);
   cmd->add_option("--output,-o", opt->output, "Output file (.npy or .csv); '-' for CSV on stdout")->required();
-  cmd->callback([opt] {
-    if (region_dim(*opt) == 2)
-      run_unbounded<2>(*opt);
-    else
-      run_unbounded<3>(*opt);
-  });
+  cmd->callback([opt] { by_dim(*opt, run_unbounded<2>, run_unbounded<3>); });
 
   auto chunks = std::make_shared<UnboundedOptions>();
   CLI::App* ccmd = app.add_subcommand(
@@ -202,12 +220,9 @@ void add_unbounded(CLI::App& app) {
   add_field_options(*ccmd, *chunks);
   ccmd->add_option("--chunk", chunks->chunk, "Chunk edge (the last chunk along an axis is clipped)")->required();
   ccmd->add_option("--output,-o", chunks->output, "Output directory")->required();
-  ccmd->callback([chunks] {
-    if (region_dim(*chunks) == 2)
-      run_chunks<2>(*chunks);
-    else
-      run_chunks<3>(*chunks);
-  });
+  ccmd->add_option("--threads,-t", chunks->threads, "Threads sampling chunks (0: all cores); the files do not depend on it")
+      ->capture_default_str();
+  ccmd->callback([chunks] { by_dim(*chunks, run_chunks<2>, run_chunks<3>); });
 }
 
 }  // namespace pds::cli
