@@ -12,6 +12,8 @@ expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 6.25 -t 1 -o 
 expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 6.25 -t 3 -o "$tmp/threads"
 expect_exit 0 "" -- unbounded -r 1 -s 6 --region -3.5,2,27,19 -o "$tmp/other.npy"
 expect_exit 0 "" -- unbounded -r 1 -s 5 --region 0,0,0,4,4,3 -o "$tmp/cube.csv"
+expect_exit 0 "" -- unbounded -r 1 -s 5 --torus -3.5,2,27,19 --region -3.5,2,27,19 -o "$tmp/torus.npy"
+expect_exit 0 "" -- chunks -r 1 -s 5 --torus -3.5,2,27,19 --region -3.5,2,27,19 --chunk 9 -o "$tmp/tchunks"
 
 # Reads NPY files with the standard library only; prints "same" when the
 # union of the manifest's chunks, sorted lexicographically, has the bytes of
@@ -41,6 +43,8 @@ print('same' if sorted(union) == whole and sorted(whole) == whole and len(whole)
 PY
 }
 if [[ $(check "$tmp/whole.npy" "$tmp/chunks") == same ]]; then ok; else bad "chunks differ from the whole region"; fi
+if [[ $(check "$tmp/torus.npy" "$tmp/tchunks") == same ]]; then ok; else bad "torus chunks differ from the whole torus"; fi
+if [[ $(check "$tmp/torus.npy" "$tmp/chunks") == different ]]; then ok; else bad "the torus gave the plane's set"; fi
 if diff -r "$tmp/serial" "$tmp/threads" >/dev/null && diff -r "$tmp/serial" "$tmp/chunks" >/dev/null; then ok; else bad "threads changed the chunk files"; fi
 if [[ $(ls "$tmp/chunks" | wc -l) -eq 16 ]]; then ok; else bad "expected 15 chunks and a manifest"; fi
 if [[ $(check "$tmp/whole.npy" "$tmp/one") == same ]]; then ok; else bad "one chunk differs from the whole region"; fi
@@ -54,6 +58,9 @@ expect_exit 2 "is empty" -- unbounded -r 1 --region 0,2,1,1 -o "$tmp/x.csv"
 expect_exit 2 "above the cap" -- unbounded -r 0.001 --region 0,0,1000,1000 -o "$tmp/x.csv"
 expect_exit 2 "2^40 cells" -- unbounded -r 1 --region 1e13,0,1.00000000001e13,1 -o "$tmp/x.csv"
 expect_exit 2 "darts_per_cell" -- unbounded -r 1 --darts-per-cell 0 --region 0,0,1,1 -o "$tmp/x.csv"
+expect_exit 2 "not inside the torus" -- unbounded -r 1 --torus 0,0,10,10 --region 0,0,11,10 -o "$tmp/x.csv"
+expect_exit 2 "5 to 2^40" -- unbounded -r 1 --torus 0,0,3,10 --region 0,0,1,1 -o "$tmp/x.csv"
+expect_exit 2 "--torus needs 4" -- unbounded -r 1 --torus 0,0,3 --region 0,0,1,1 -o "$tmp/x.csv"
 expect_exit 2 "--chunk" -- chunks -r 1 --region 0,0,10,10 --chunk 0 -o "$tmp/d"
 expect_exit 2 "--chunk" -- chunks -r 1 --region 0,0,10,10 --chunk -1 -o "$tmp/d"
 expect_exit 2 "10^6 chunks" -- chunks -r 1 --region 0,0,10,10 --chunk 1e-4 -o "$tmp/d"

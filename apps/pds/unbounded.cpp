@@ -25,6 +25,7 @@ struct UnboundedOptions {
   double radius = 0.0;
   std::uint64_t seed = 0;
   std::vector<double> region;  // x0,y0[,z0],x1,y1[,z1]
+  std::vector<double> torus;   // the same, when the field lives on a torus
   double darts_per_cell = UnboundedParams{}.darts_per_cell;
   std::uint64_t max_points = kDefaultMaxPoints;
   double chunk = 0.0;  // pds chunks only
@@ -39,6 +40,10 @@ void add_field_options(CLI::App& cmd, UnboundedOptions& o) {
   cmd.add_option("--region", o.region, "Box as lo then hi corners, x0,y0,x1,y1 (2D) or x0,y0,z0,x1,y1,z1 (3D)")
       ->delimiter(',')
       ->required();
+  cmd.add_option("--torus", o.torus,
+                 "The field on this torus (lo then hi corners, as --region) instead of the whole plane; "
+                 "--region must lie inside it")
+      ->delimiter(',');
   cmd.add_option("--darts-per-cell", o.darts_per_cell,
                  "Expected darts a cell of edge r/sqrt(D): more darts, fewer gaps (docs/unbounded.md)")
       ->capture_default_str();
@@ -58,20 +63,31 @@ void by_dim(const UnboundedOptions& o, void (*f2)(const UnboundedOptions&), void
 }
 
 template <int D>
-Domain<D> region_of(const UnboundedOptions& o) {
-  Domain<D> region;
+Domain<D> box_of(const std::vector<double>& values, const std::string& option) {
+  if (values.size() != 2 * D)
+    throw InvalidArgument(option + " needs " + std::to_string(2 * D) + " values for dimension " + std::to_string(D) +
+                          " (as --region), got " + std::to_string(values.size()));
+  Domain<D> box;
   for (int a = 0; a < D; ++a) {
-    region.lo[a] = o.region[static_cast<std::size_t>(a)];
-    region.hi[a] = o.region[static_cast<std::size_t>(a + D)];
-    validate_axis(a, region.lo[a], region.hi[a]);
+    box.lo[a] = values[static_cast<std::size_t>(a)];
+    box.hi[a] = values[static_cast<std::size_t>(a + D)];
+    validate_axis(a, box.lo[a], box.hi[a]);
   }
-  return region;
+  return box;
+}
+
+template <int D>
+Domain<D> region_of(const UnboundedOptions& o) {
+  return box_of<D>(o.region, "--region");
 }
 
 template <int D>
 UnboundedField<D> field_of(const UnboundedOptions& o) {
-  return UnboundedField<D>({.radius = o.radius, .darts_per_cell = o.darts_per_cell, .max_points = o.max_points},
-                           o.seed);
+  const UnboundedParams params{.radius = o.radius, .darts_per_cell = o.darts_per_cell, .max_points = o.max_points};
+  if (o.torus.empty()) return UnboundedField<D>(params, o.seed);
+  Domain<D> torus = box_of<D>(o.torus, "--torus");
+  torus.periodic = true;
+  return UnboundedField<D>(params, o.seed, torus);
 }
 
 nlohmann::ordered_json stats_json(const UnboundedStats& s) {
@@ -140,6 +156,13 @@ void run_chunks(const UnboundedOptions& o) {
   manifest["darts_per_cell"] = o.darts_per_cell;
   manifest["region"] = {{"lo", std::vector<double>(region.lo.begin(), region.lo.end())},
                         {"hi", std::vector<double>(region.hi.begin(), region.hi.end())}};
+  if (o.torus.empty()) {
+    manifest["torus"] = nullptr;
+  } else {
+    const Domain<D> torus = box_of<D>(o.torus, "--torus");
+    manifest["torus"] = {{"lo", std::vector<double>(torus.lo.begin(), torus.lo.end())},
+                         {"hi", std::vector<double>(torus.hi.begin(), torus.hi.end())}};
+  }
   manifest["chunk"] = o.chunk;
   manifest["order"] = "each file: lexicographic in the coordinates; chunk [lo, hi) half-open";
   // The chunks in index order (the first axis fastest), then sampled and

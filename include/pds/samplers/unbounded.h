@@ -4,6 +4,7 @@
 // for, in any pieces, in any order, with the same samples every time.
 // docs/unbounded.md explains the construction and what it guarantees.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -50,6 +51,8 @@ struct UnboundedStats {
 /// platform (portable logarithm, no libm); the law of dart throwing with
 /// darts_per_cell darts per cell. Not maximal: gaps remain where no dart fell
 /// (docs/unbounded.md measures them).
+/// On a torus (the second constructor) the same holds with wrapped cells and
+/// distances: the set is dart throwing on that torus.
 /// Invalid: a radius that is not positive and finite; darts_per_cell outside
 /// (0, 64]; a periodic or empty region; a region farther than 2^40 cells from
 /// the origin (positions would lose precision); a region whose densest
@@ -60,18 +63,28 @@ class UnboundedField {
  public:
   UnboundedField(const UnboundedParams& params, std::uint64_t seed);
 
+  /// The same construction on a torus (`torus.periodic` must be set): each
+  /// axis of extent L is cut into n = floor(L sqrt(D) / radius) >= 5 cells
+  /// that wrap, and distances wrap. sample() then takes boxes inside the
+  /// torus. Invalid: fewer than 5 cells or more than 2^40 along an axis.
+  UnboundedField(const UnboundedParams& params, std::uint64_t seed, const Domain<D>& torus);
+
   /// The samples in the box region.lo <= x < region.hi (region must not be
   /// periodic). `stats`, when given, receives the work done.
   PointSet<D> sample(const Domain<D>& region, UnboundedStats* stats = nullptr) const;
 
   double radius() const { return params_.radius; }
-  double cell_edge() const { return edge_; }
+  /// The cells' edge along axis 0 (on a torus each axis has its own).
+  double cell_edge() const { return edges_[0]; }
   std::uint64_t seed() const { return seed_; }
 
  private:
   UnboundedParams params_;
   std::uint64_t seed_;
-  double edge_;
+  bool periodic_ = false;
+  Domain<D> torus_{};                  // when periodic_
+  std::array<double, D> edges_{};      // cell edge per axis
+  std::array<std::int64_t, D> cells_{};  // cells per axis on the torus
 };
 
 /// The bound on the chain of ever earlier darts one decision may recurse

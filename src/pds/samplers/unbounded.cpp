@@ -143,10 +143,15 @@ Cell<D> filled_cell(std::int64_t v) {
 template <int D>
 class Settler {
  public:
-  Settler(const UnboundedParams& params, std::uint64_t seed, double edge, const Cell<D>& lo, const Cell<D>& hi)
+  /// `torus` null: the plane, cells of edge edges[a] from the origin; else
+  /// cells of edge edges[a] from torus->lo, `period[a]` of them along each axis.
+  Settler(const UnboundedParams& params, std::uint64_t seed, const std::array<double, D>& edges,
+          const Domain<D>* torus, const Cell<D>& period, const Cell<D>& lo, const Cell<D>& hi)
       : r2_(params.radius * params.radius),
         end_time_(params.darts_per_cell),
-        edge_(edge),
+        edges_(edges),
+        torus_(torus),
+        period_(period),
         key_(mix64(mix64(seed ^ 0x756e626f756e6465ULL) + 0x9e3779b97f4a7c15ULL)),
         offsets_(neighbour_offsets<D>()) {
     std::size_t size = 1;
@@ -158,6 +163,14 @@ class Settler {
     dense_.resize(size);
   }
 
+  /// The cell's own coordinates: on a torus, wrapped into [0, period).
+  Cell<D> canonical(Cell<D> c) const {
+    if (torus_)
+      for (int a = 0; a < D; ++a) c[a] = ((c[a] % period_[a]) + period_[a]) % period_[a];
+    return c;
+  }
+
+  /// The state of a cell given by its own (canonical) coordinates.
   CellState<D>& state(const Cell<D>& c) {
     std::size_t index = 0;
     bool inside = true;
@@ -177,7 +190,8 @@ class Settler {
   }
 
   /// Decides every dart of cell c before time t.
-  void settle_until(const Cell<D>& c, double t) {
+  void settle_until(Cell<D> c, double t) {
+    c = canonical(c);
     CellState<D>& s = state(c);
     while (s.swept < s.darts.size() && s.darts[s.swept].t < t) decide(c, s, s.swept++);
   }
@@ -202,7 +216,10 @@ class Settler {
       Dart<D> d;
       d.t = t;
       for (int a = 0; a < D; ++a)
-        d.p[a] = (static_cast<double>(c[a]) + uniform_from_bits(part(a + 1))) * edge_;
+        d.p[a] = origin(a) + (static_cast<double>(c[a]) + uniform_from_bits(part(a + 1))) * edges_[a];
+      if (torus_)  // rounding must not put a dart on the torus's upper bound
+        for (int a = 0; a < D; ++a)
+          if (!(d.p[a] < torus_->hi[a])) d.p[a] = std::nextafter(torus_->hi[a], torus_->lo[a]);
       s.darts.push_back(d);
     }
     s.status.assign(s.darts.size(), kUndecided);
@@ -235,17 +252,19 @@ class Settler {
         // Widened by 2^-10 of a cell: a dart's position (c + u) * edge may
         // round past its cell's bounds by up to 2^-12 of a cell at 2^40 cells
         // from the origin.
-        const double lo = (static_cast<double>(m[a]) - 0x1.0p-10) * edge_, hi = lo + edge_ * (1.0 + 0x1.0p-9);
+        const double lo = origin(a) + (static_cast<double>(m[a]) - 0x1.0p-10) * edges_[a],
+                     hi = lo + edges_[a] * (1.0 + 0x1.0p-9);
         const double g = d.p[a] < lo ? lo - d.p[a] : (d.p[a] > hi ? d.p[a] - hi : 0.0);
         gap2 += g * g;
       }
       if (gap2 > r2_ * (1.0 + 1e-9)) continue;  // no dart of cell m is within r
+      m = canonical(m);
       CellState<D>& ms = state(m);
       for (std::uint32_t k = 0; k < ms.darts.size() && ms.darts[k].t <= d.t; ++k) {
         if (ms.status[k] == kRejected || !earlier<D>(ms.darts[k].t, m, k, key)) continue;
         double dist2 = 0.0;
         for (int a = 0; a < D; ++a) {
-          const double delta = ms.darts[k].p[a] - d.p[a];
+          const double delta = torus_ ? torus_->delta(d.p[a], ms.darts[k].p[a], a) : ms.darts[k].p[a] - d.p[a];
           dist2 += delta * delta;
         }
         if (!(dist2 < r2_)) continue;
@@ -271,7 +290,12 @@ class Settler {
     return kept;
   }
 
-  double r2_, end_time_, edge_;
+  double origin(int a) const { return torus_ ? torus_->lo[a] : 0.0; }
+
+  double r2_, end_time_;
+  std::array<double, D> edges_;
+  const Domain<D>* torus_;
+  Cell<D> period_;
   std::uint64_t key_;
   std::vector<Cell<D>> offsets_;
   Cell<D> dense_lo_{}, dense_n_{};
@@ -287,11 +311,30 @@ class Settler {
 
 template <int D>
 UnboundedField<D>::UnboundedField(const UnboundedParams& params, std::uint64_t seed)
-    : params_(params), seed_(seed), edge_(params.radius / std::sqrt(static_cast<double>(D))) {
+    : params_(params), seed_(seed) {
   static_assert(D >= 2 && D <= 3, "the unbounded field is built for the plane and space");
   require_radius(params.radius);
   if (!(params.darts_per_cell > 0.0 && params.darts_per_cell <= 64.0))
     throw InvalidArgument("darts_per_cell: " + detail::format_number(params.darts_per_cell) + " is outside (0, 64]");
+  edges_.fill(params.radius / std::sqrt(static_cast<double>(D)));
+}
+
+template <int D>
+UnboundedField<D>::UnboundedField(const UnboundedParams& params, std::uint64_t seed, const Domain<D>& torus)
+    : UnboundedField(params, seed) {
+  if (!torus.periodic) throw InvalidArgument("torus: the domain is not periodic (use the plane's constructor)");
+  periodic_ = true;
+  torus_ = torus;
+  for (int a = 0; a < D; ++a) {
+    validate_axis(a, torus.lo[a], torus.hi[a]);
+    const double n = std::floor(torus.extent(a) / edges_[a]);
+    if (!(n >= 5.0 && n <= kMaxCellIndex))
+      throw InvalidArgument("torus: axis " + std::to_string(a) + " of extent " + detail::format_number(torus.extent(a)) +
+                            " holds " + detail::format_number(n) + " cells of edge radius/sqrt(D) = " +
+                            detail::format_number(edges_[a]) + "; it needs 5 to 2^40 (use ebeida for small tori)");
+    cells_[a] = static_cast<std::int64_t>(n);
+    edges_[a] = torus.extent(a) / n;  // <= radius/sqrt(D): still one sample a cell, reach 2 cells
+  }
 }
 
 template <int D>
@@ -300,16 +343,25 @@ PointSet<D> UnboundedField<D>::sample(const Domain<D>& region, UnboundedStats* s
   Cell<D> lo, hi;
   for (int a = 0; a < D; ++a) {
     validate_axis(a, region.lo[a], region.hi[a]);
-    const double l = std::floor(region.lo[a] / edge_), h = std::floor(region.hi[a] / edge_);
+    if (periodic_ && !(region.lo[a] >= torus_.lo[a] && region.hi[a] <= torus_.hi[a]))
+      throw InvalidArgument("region: axis " + std::to_string(a) + " [" + detail::format_number(region.lo[a]) + ", " +
+                            detail::format_number(region.hi[a]) + ") is not inside the torus [" +
+                            detail::format_number(torus_.lo[a]) + ", " + detail::format_number(torus_.hi[a]) + ")");
+    const double origin = periodic_ ? torus_.lo[a] : 0.0;
+    const double l = std::floor((region.lo[a] - origin) / edges_[a]), h = std::floor((region.hi[a] - origin) / edges_[a]);
     if (!(std::abs(l) <= kMaxCellIndex && std::abs(h) <= kMaxCellIndex))
       throw InvalidArgument("region: axis " + std::to_string(a) + " reaches " +
                             detail::format_number(std::abs(l) > std::abs(h) ? region.lo[a] : region.hi[a]) +
-                            ", more than 2^40 cells (of edge " + detail::format_number(edge_) +
+                            ", more than 2^40 cells (of edge " + detail::format_number(edges_[a]) +
                             ") from the origin");
     // One cell more on each side: rounding of (c + u) * edge may put a dart
-    // of a neighbouring cell on the region's edge.
+    // of a neighbouring cell on the region's edge. On a torus, only its cells.
     lo[a] = static_cast<std::int64_t>(l) - 1;
     hi[a] = static_cast<std::int64_t>(h) + 1;
+    if (periodic_) {
+      lo[a] = std::max<std::int64_t>(lo[a], 0);
+      hi[a] = std::min<std::int64_t>(hi[a], cells_[a] - 1);
+    }
   }
   require_point_budget(packing_count(region.volume(), params_.radius, D), D, params_.max_points,
                        "radius " + detail::format_number(params_.radius) + " over a region of volume " +
@@ -318,7 +370,7 @@ PointSet<D> UnboundedField<D>::sample(const Domain<D>& region, UnboundedStats* s
                        // in 3D at 8 darts a cell; docs/unbounded.md), with margin.
                        D == 2 ? 96.0 : 320.0);
 
-  Settler<D> settler(params_, seed_, edge_, lo, hi);
+  Settler<D> settler(params_, seed_, edges_, periodic_ ? &torus_ : nullptr, cells_, lo, hi);
   const auto for_each_cell = [&](auto&& f) {
     Cell<D> c = lo;
     while (true) {

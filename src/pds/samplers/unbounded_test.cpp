@@ -194,6 +194,30 @@ TEST(Unbounded, RefusesBadInput) {
   EXPECT_NO_THROW(field.sample(box<2>({{0.0, 0.0}}, {{10.0, 10.0}})));
 }
 
+// On a torus: chunks across the wrap, distances that wrap.
+TEST(Unbounded, Torus) {
+  const auto torus = Domain<2>::torus({{-3.0, 2.0}}, {{17.0, 14.5}});
+  const UnboundedField<2> field({.radius = 1.0}, 12, torus);
+  const auto whole = field.sample(Domain<2>::box(torus.lo, torus.hi));
+  ASSERT_GT(whole.size(), 120u);
+  for (const auto& p : whole) EXPECT_TRUE(torus.contains(p)) << p;
+  EXPECT_GE(min_distance_brute_force(whole, torus).distance, 1.0);
+  const auto region = Domain<2>::box(torus.lo, torus.hi);
+  EXPECT_TRUE(same_bytes(whole, union_of_chunks(field, chunks(region, {3, 4}, 21))));
+  EXPECT_TRUE(same_bytes(whole, union_of_chunks(field, chunks(region, {7, 2}, 0))));
+  // Not the plane's set, and refusals.
+  EXPECT_FALSE(same_bytes(whole, UnboundedField<2>({.radius = 1.0}, 12).sample(region)));
+  EXPECT_THROW(UnboundedField<2>({.radius = 1.0}, 1, Domain<2>::torus({{0.0, 0.0}}, {{3.0, 10.0}})), InvalidArgument);
+  EXPECT_THROW(UnboundedField<2>({.radius = 1.0}, 1, Domain<2>::box({{0.0, 0.0}}, {{10.0, 10.0}})), InvalidArgument);
+  EXPECT_THROW(field.sample(box<2>({{-4.0, 2.0}}, {{0.0, 3.0}})), InvalidArgument);
+  // 3D, smallest torus allowed (5 cells an axis).
+  const auto cube = Domain<3>::torus({{0.0, 0.0, 0.0}}, {{3.0, 3.0, 3.0}});
+  const UnboundedField<3> small({.radius = 1.0}, 2, cube);
+  const auto points = small.sample(Domain<3>::box(cube.lo, cube.hi));
+  EXPECT_GE(min_distance_brute_force(points, cube).distance, 1.0);
+  EXPECT_TRUE(same_bytes(points, union_of_chunks(small, chunks(Domain<3>::box(cube.lo, cube.hi), {2, 3, 2}, 4))));
+}
+
 /// Sequential dart throwing on a torus of side L with `darts` uniform darts,
 /// the process the field runs on the plane: the reference law.
 PointSet<2> torus_rsa(double L, double r, std::uint64_t darts, std::uint64_t seed) {
@@ -251,6 +275,20 @@ TEST(Unbounded, StatisticsOfDartThrowing) {
   }
   EXPECT_LT(std::abs(testing_stats::welch_t(count_field, count_ref)), testing_stats::kMaxT);
   EXPECT_LT(std::abs(testing_stats::welch_t(nn_field, nn_ref)), testing_stats::kMaxT);
+  // On a torus the field is exactly that process (33^2 cells of edge 24/33,
+  // T darts each), with no window: the same comparison.
+  const auto torus = Domain<2>::torus({{0.0, 0.0}}, {{L, L}});
+  std::vector<double> count_torus, nn_torus, count_ref_torus, nn_ref_torus;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto field = UnboundedField<2>(params, seed, torus).sample(region);
+    count_torus.push_back(static_cast<double>(field.size()));
+    nn_torus.push_back(testing_stats::summarize(field, torus, r).mean_over_r);
+    const auto ref = torus_rsa(L, r, static_cast<std::uint64_t>(T * 33 * 33), 2000 + seed);
+    count_ref_torus.push_back(static_cast<double>(ref.size()));
+    nn_ref_torus.push_back(testing_stats::summarize(ref, torus, r).mean_over_r);
+  }
+  EXPECT_LT(std::abs(testing_stats::welch_t(count_torus, count_ref_torus)), testing_stats::kMaxT);
+  EXPECT_LT(std::abs(testing_stats::welch_t(nn_torus, nn_ref_torus)), testing_stats::kMaxT);
   // And the test can see a difference: half the darts is far off.
   std::vector<double> count_half;
   for (std::uint64_t seed = 1; seed <= 10; ++seed)
