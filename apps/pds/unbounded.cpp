@@ -185,7 +185,10 @@ void run_chunks(const UnboundedOptions& o) {
   }
   const auto name_of = [](const std::array<std::int64_t, D>& index) {
     std::string name = "chunk";
-    for (std::int64_t k : index) name += "_" + std::to_string(k);
+    for (std::int64_t k : index) {
+      name += '_';
+      name += std::to_string(k);
+    }
     return name + ".npy";
   };
   std::vector<std::size_t> counts(parts.size());
