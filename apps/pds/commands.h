@@ -17,6 +17,8 @@ void add_compare(CLI::App& app);
 void add_tile(CLI::App& app);
 void add_render(CLI::App& app);
 void add_render_sheet(CLI::App& app);
+/// pds unbounded and pds chunks (apps/pds/unbounded.cpp).
+void add_unbounded(CLI::App& app);
 
 /// Options every command that takes a domain shares.
 struct DomainOptions {

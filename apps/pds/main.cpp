@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   pds::cli::add_tile(app);
   pds::cli::add_render(app);
   pds::cli::add_render_sheet(app);
+  pds::cli::add_unbounded(app);
   pds::cli::install_interrupt_handler();
   try {
     app.parse(argc, argv);

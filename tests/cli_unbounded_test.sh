@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# pds unbounded and pds chunks (docs/unbounded.md): the chunks of a region are
+# the whole region's samples, byte for byte; bad input exits 2 with one line.
+# Usage: cli_unbounded_test.sh PATH_TO_PDS
+pds=$1
+source "$(dirname "$0")/cli_lib.sh"
+
+expect_exit 0 "" -- unbounded -r 1 -s 5 --region -3.5,2,27,19 -o "$tmp/whole.npy"
+expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 6.25 -o "$tmp/chunks"
+expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 40 -o "$tmp/one"
+expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 6.25 -t 1 -o "$tmp/serial"
+expect_exit 0 "" -- chunks -r 1 -s 5 --region -3.5,2,27,19 --chunk 6.25 -t 3 -o "$tmp/threads"
+expect_exit 0 "" -- unbounded -r 1 -s 6 --region -3.5,2,27,19 -o "$tmp/other.npy"
+expect_exit 0 "" -- unbounded -r 1 -s 5 --region 0,0,0,4,4,3 -o "$tmp/cube.csv"
+expect_exit 0 "" -- unbounded -r 1 -s 5 --torus -3.5,2,27,19 --region -3.5,2,27,19 -o "$tmp/torus.npy"
+expect_exit 0 "" -- chunks -r 1 -s 5 --torus -3.5,2,27,19 --region -3.5,2,27,19 --chunk 9 -o "$tmp/tchunks"
+
+# Reads NPY files with the standard library only; prints "same" when the
+# union of the manifest's chunks, sorted lexicographically, has the bytes of
+# the whole region's file, and the manifest's counts add up.
+check() {
+  python3 - "$1" "$2" <<'PY'
+import json, struct, sys, os
+def load(path):
+    data = open(path, 'rb').read()
+    assert data[:6] == b'\x93NUMPY'
+    n = struct.unpack('<H', data[8:10])[0]
+    header = data[10:10 + n].decode()
+    body = data[10 + n:]
+    assert "'<f8'" in header, header
+    values = struct.unpack('<%dd' % (len(body) // 8), body)
+    return [tuple(values[i:i + 2]) for i in range(0, len(values), 2)]
+whole = load(sys.argv[1])
+manifest = json.load(open(os.path.join(sys.argv[2], 'manifest.json')))
+union = []
+for c in manifest['chunks']:
+    pts = load(os.path.join(sys.argv[2], c['file']))
+    assert len(pts) == c['count']
+    assert all(c['lo'][k] <= p[k] < c['hi'][k] for p in pts for k in range(2)), c['file']
+    union += pts
+assert manifest['count'] == len(union)
+print('same' if sorted(union) == whole and sorted(whole) == whole and len(whole) > 300 else 'different')
+PY
+}
+if [[ $(check "$tmp/whole.npy" "$tmp/chunks") == same ]]; then ok; else bad "chunks differ from the whole region"; fi
+if [[ $(check "$tmp/torus.npy" "$tmp/tchunks") == same ]]; then ok; else bad "torus chunks differ from the whole torus"; fi
+if [[ $(check "$tmp/torus.npy" "$tmp/chunks") == different ]]; then ok; else bad "the torus gave the plane's set"; fi
+if diff -r "$tmp/serial" "$tmp/threads" >/dev/null && diff -r "$tmp/serial" "$tmp/chunks" >/dev/null; then ok; else bad "threads changed the chunk files"; fi
+if [[ $(ls "$tmp/chunks" | wc -l) -eq 16 ]]; then ok; else bad "expected 15 chunks and a manifest"; fi
+if [[ $(check "$tmp/whole.npy" "$tmp/one") == same ]]; then ok; else bad "one chunk differs from the whole region"; fi
+if [[ $(check "$tmp/other.npy" "$tmp/chunks") == different ]]; then ok; else bad "another seed gave the same set"; fi
+if [[ $(head -1 "$tmp/cube.csv") == x,y,z && $(wc -l <"$tmp/cube.csv") -gt 20 ]]; then ok; else bad "3D region"; fi
+
+expect_exit 2 "radius" -- unbounded -r 0 --region 0,0,1,1 -o "$tmp/x.csv"
+expect_exit 2 "radius" -- unbounded -r nan --region 0,0,1,1 -o "$tmp/x.csv"
+expect_exit 2 "--region needs 4 values" -- unbounded -r 1 --region 0,0,1 -o "$tmp/x.csv"
+expect_exit 2 "is empty" -- unbounded -r 1 --region 0,2,1,1 -o "$tmp/x.csv"
+expect_exit 2 "above the cap" -- unbounded -r 0.001 --region 0,0,1000,1000 -o "$tmp/x.csv"
+expect_exit 2 "2^40 cells" -- unbounded -r 1 --region 1e13,0,1.00000000001e13,1 -o "$tmp/x.csv"
+expect_exit 2 "darts_per_cell" -- unbounded -r 1 --darts-per-cell 0 --region 0,0,1,1 -o "$tmp/x.csv"
+expect_exit 2 "not inside the torus" -- unbounded -r 1 --torus 0,0,10,10 --region 0,0,11,10 -o "$tmp/x.csv"
+expect_exit 2 "5 to 2^40" -- unbounded -r 1 --torus 0,0,3,10 --region 0,0,1,1 -o "$tmp/x.csv"
+expect_exit 2 "--torus needs 4" -- unbounded -r 1 --torus 0,0,3 --region 0,0,1,1 -o "$tmp/x.csv"
+expect_exit 2 "--chunk" -- chunks -r 1 --region 0,0,10,10 --chunk 0 -o "$tmp/d"
+expect_exit 2 "--chunk" -- chunks -r 1 --region 0,0,10,10 --chunk -1 -o "$tmp/d"
+expect_exit 2 "10^6 chunks" -- chunks -r 1 --region 0,0,10,10 --chunk 1e-4 -o "$tmp/d"
+finish cli_unbounded
