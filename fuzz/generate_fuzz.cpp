@@ -58,8 +58,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // dart-throwing's failure bound is the user's own loop bound (up to 1e15
     // darts): a large one is a long run by request, not a hang.
     if (name == "failures" && value > 1e5) value = 1e5;
+    // fpo's sweep budget likewise (its default, 1000, is ~10x the 10 s above).
+    if (name == "sweeps" && value > 100) value = 100;
     r.params[(which & 0x80) ? name + "x" : name] = value;
   }
+  if (m.name == "fpo" && !r.params.count("sweeps")) r.params["sweeps"] = 100;
   try {
     const pds::PointCloud cloud = pds::generate(m.name, r);
     if (cloud.dim != r.dim) std::abort();

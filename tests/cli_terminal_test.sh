@@ -38,4 +38,6 @@ if command -v script >/dev/null; then
 fi
 $run 2>"$tmp/err" && [[ ! -s "$tmp/err" ]] && ok || bad "progress drawn to a non-terminal: $(cat "$tmp/err")"
 
+expect_exit 0 "" -- render --size 16x16 --spp 1 --quiet -o "$tmp/r.png"
+
 finish cli_terminal

@@ -4,6 +4,8 @@
 // above the smallest float32 accepts, so that plain rounding does bite. Each
 // set is checked by the all-pairs oracle on its float32 coordinates.
 
+#include "pds/float32.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +15,6 @@
 
 #include "pds/analysis/distance.h"
 #include "pds/error.h"
-#include "pds/float32.h"
 #include "pds/registry.h"
 
 namespace pds {

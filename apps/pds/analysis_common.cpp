@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "pds/error.h"
+#include "terminal.h"
 
 namespace pds::cli {
 
@@ -46,9 +47,8 @@ void add_generation_options(CLI::App& command, GenerationOptions& o, const Gener
   o.added.push_back(
       command.add_option("--max-points", o.max_points, help("Refuse requests that could produce more points"))
           ->capture_default_str());
-  o.added.push_back(command
-                        .add_option("--max-memory", o.max_memory,
-                                    help("Refuse requests whose estimated peak memory exceeds this (e.g. 512M, 2G)")));
+  o.added.push_back(command.add_option(
+      "--max-memory", o.max_memory, help("Refuse requests whose estimated peak memory exceeds this (e.g. 512M, 2G)")));
   // Not in `added`: it applies to any run, not only to generation.
   command.add_flag("--quiet,-q", o.quiet, help("No progress bar on the terminal"));
   o.added.push_back(command.add_option("--param,-P", o.params, help("Method parameter NAME=VALUE (repeatable)")));
@@ -89,6 +89,18 @@ double parse_size(const std::string& text, const std::string& option) {
   if (ec != std::errc() || unit.size() > 1 || power == std::string::npos || !(value >= 0) || !std::isfinite(value))
     throw InvalidArgument(option + " expects a size such as 512M or 2G, got '" + text + "'");
   return std::ldexp(value, 10 * static_cast<int>(unit.empty() ? 0 : power + 1));
+}
+
+PointCloud generate_with_progress(const std::string& method, GenerateRequest request, bool quiet) {
+  const ProgressBar bar(method, quiet);
+  request.progress = bar.progress();
+  return generate(method, request);
+}
+
+void write_output(const std::string& path, const PointCloud& points, NpyType npy_type) {
+  if (path != "-") interrupt_removes(temporary_path(path));
+  write_points(path, points, npy_type);
+  interrupt_removes("");
 }
 
 std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "pds/io/point_file.h"
 #include "pds/point.h"
 #include "pds/registry.h"
 
@@ -64,6 +65,13 @@ bool any_generation_option_given(const GenerationOptions& options);
 /// Progress: one part per set (pds::part_of).
 std::vector<PointCloud> generate_sets(const std::string& method, GenerateRequest request, std::size_t sets,
                                       const Progress& progress = {});
+
+/// generate() with a progress bar labelled with the method (none with
+/// `quiet` or off a terminal).
+PointCloud generate_with_progress(const std::string& method, GenerateRequest request, bool quiet);
+
+/// write_points() whose temporary file a Ctrl-C removes (terminal.h).
+void write_output(const std::string& path, const PointCloud& points, NpyType npy_type = NpyType::Float64);
 
 /// Bytes from a size such as 512M, 2G, 1.5GiB or 1000000 (K, M, G, T: powers
 /// of 1024); throws InvalidArgument naming the option.

@@ -11,6 +11,7 @@
 #include "pds/error.h"
 #include "pds/io/plot.h"
 #include "pds/registry.h"
+#include "terminal.h"
 
 namespace pds::cli {
 namespace {
@@ -63,7 +64,10 @@ void add_compare(CLI::App& app) {
       GenerateRequest request = generation_request(opt->generation, kCompareGeneration);
       request.torus = true;
       std::vector<PointSet<2>> sets;
-      for (const PointCloud& c : generate_sets(name, request, opt->sets)) sets.push_back(c.as<2>());
+      {
+        const ProgressBar bar(name, opt->generation.quiet);
+        for (const PointCloud& c : generate_sets(name, request, opt->sets, bar.progress())) sets.push_back(c.as<2>());
+      }
       const Domain<2> domain = Domain<2>::unit(true);
       ComparisonRow row;
       row.name = name;

@@ -9,7 +9,6 @@
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/registry.h"
-#include "terminal.h"
 
 namespace pds::cli {
 namespace {
@@ -43,15 +42,8 @@ void add_generate(CLI::App& app) {
     GenerateRequest request = generation_request(opt->generation);
     apply_constraint_options(opt->constraints, request);
     request.float32 = opt->dtype == "float32";
-    PointCloud points;
-    {
-      const ProgressBar bar(opt->method, opt->generation.quiet);
-      request.progress = bar.progress();
-      points = generate(opt->method, request);
-    }
-    if (opt->output != "-") interrupt_removes(temporary_path(opt->output));
-    write_points(opt->output, points, opt->dtype == "float32" ? NpyType::Float32 : NpyType::Float64);
-    interrupt_removes("");
+    const PointCloud points = generate_with_progress(opt->method, request, opt->generation.quiet);
+    write_output(opt->output, points, opt->dtype == "float32" ? NpyType::Float32 : NpyType::Float64);
     if (const std::size_t fixed = request.constraints.fixed.size(); fixed && !opt->generation.quiet)
       std::cerr << "pds: the first " << fixed << " of " << points.size() << " points are the fixed ones of "
                 << opt->constraints.fixed << "\n";

@@ -15,6 +15,7 @@
 #include "pds/io/render_json.h"
 #include "pds/render/metrics.h"
 #include "pds/render/png.h"
+#include "terminal.h"
 
 namespace pds::cli {
 namespace {
@@ -28,6 +29,7 @@ struct RenderCommonOptions {
   std::vector<std::string> params;
   int threads = 0;
   int reference_spp = 256;
+  bool quiet = false;
 };
 
 void add_common(CLI::App& cmd, RenderCommonOptions& o) {
@@ -43,6 +45,15 @@ void add_common(CLI::App& cmd, RenderCommonOptions& o) {
   cmd.add_option("--threads,-t", o.threads, "Threads (0: all cores)")->capture_default_str();
   cmd.add_option("--reference-spp", o.reference_spp, "Jittered samples per pixel of the reference image")
       ->capture_default_str();
+  cmd.add_flag("--quiet,-q", o.quiet, "No progress bar on the terminal");
+}
+
+/// run(options) with a progress bar labelled `label` in options.progress.
+template <class F>
+Image with_bar(const std::string& label, bool quiet, RenderOptions options, F&& run) {
+  const ProgressBar bar(label, quiet);
+  options.progress = bar.progress();
+  return run(options);
 }
 
 std::pair<int, int> parse_size(const std::string& s) {
@@ -119,12 +130,18 @@ void add_render(CLI::App& app) {
     }
     RenderStats stats;
     const auto start = std::chrono::steady_clock::now();
-    const Image image = render(*scene, *sampler, w, h, ro, &stats);
+    const Image image = with_bar("render", opt->quiet, ro, [&, w = w, h = h](const RenderOptions& o) {
+      return render(*scene, *sampler, w, h, o, &stats);
+    });
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    interrupt_removes(opt->output);  // Cairo writes the file in place: Ctrl-C removes a partial one
     write_png(opt->output, image);
+    interrupt_removes("");
     if (!opt->metrics && opt->error_png.empty() && opt->spectrum_png.empty() && opt->samples_spectrum_png.empty())
       return;
-    const Image reference = render_reference(*scene, w, h, opt->reference_spp, ro);
+    const Image reference = with_bar("reference", opt->quiet, ro, [&, w = w, h = h](const RenderOptions& o) {
+      return render_reference(*scene, w, h, opt->reference_spp, o);
+    });
     RenderMetricImages images;
     const RenderReport report{.scene = opt->scene,
                               .sampler = opt->tile.empty() ? opt->sampler : "tile",
@@ -169,7 +186,9 @@ void add_render_sheet(CLI::App& app) {
     if (opt->samplers.empty() || opt->spps.empty()) throw InvalidArgument("render-sheet needs samplers and spp values");
     RenderOptions ro{parse_filter(opt->filter), opt->threads};
     const auto scene = make_scene(opt->scene, w, h);
-    const Image reference = render_reference(*scene, w, h, opt->reference_spp, ro);
+    const Image reference = with_bar("reference", opt->quiet, ro, [&, w = w, h = h](const RenderOptions& o) {
+      return render_reference(*scene, w, h, opt->reference_spp, o);
+    });
     const auto params = parse_params(opt->params);
     std::vector<SheetPanel> panels;
     RenderSheetReport report{
@@ -178,7 +197,9 @@ void add_render_sheet(CLI::App& app) {
       for (const std::string& name : opt->samplers) {
         const auto sampler =
             make_image_sampler(name, {.spp = spp, .seed = opt->seed, .tile_count = opt->tile_count, .params = params});
-        const Image image = render(*scene, *sampler, w, h, ro);
+        const Image image =
+            with_bar(name + " " + std::to_string(spp) + " spp", opt->quiet, ro,
+                     [&, w = w, h = h](const RenderOptions& o) { return render(*scene, *sampler, w, h, o); });
         report.panels.push_back({name, spp, measure_render(image, reference, *sampler)});
         char label[160];
         std::snprintf(label, sizeof label, "%s, %d spp: RMSE %.4f", name.c_str(), spp,
@@ -188,7 +209,9 @@ void add_render_sheet(CLI::App& app) {
     std::ostringstream title;
     title << opt->scene << ", " << opt->filter << " filter, error against " << opt->reference_spp
           << " jittered spp, seed " << opt->seed;
+    interrupt_removes(opt->output);
     write_sheet(opt->output, panels, static_cast<int>(opt->samplers.size()), title.str());
+    interrupt_removes("");
     std::cout << render_sheet_json(report) << std::endl;
   });
 }

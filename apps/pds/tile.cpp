@@ -36,8 +36,9 @@ void add_tile(CLI::App& app) {
     // Sized as the tiled render samplers size their tiles (pds::generate_tile),
     // so `pds render --tile` of this file and `pds render --sampler METHOD`
     // with the same count and seed draw the same samples.
-    const PointCloud points = generate(opt->method, size_request(find_method(opt->method), request));
-    write_points(opt->output, points);
+    const PointCloud points =
+        generate_with_progress(opt->method, size_request(find_method(opt->method), request), opt->generation.quiet);
+    write_output(opt->output, points);
     if (opt->output == "-") return;
     // A summary: the toroidal minimum distance is what survives tiling.
     nlohmann::ordered_json out;

@@ -49,11 +49,10 @@ double float32_spacing(const std::vector<double>& lo, const std::vector<double>&
 double float32_sampling_radius(double r, int dim, double spacing, int attempt) {
   const double inflation = 2.0 * std::sqrt(static_cast<double>(dim)) * spacing;
   if (inflation > kFloat32MaxInflation * r)
-    throw InvalidArgument("float32: radius " + detail::format_number(r) +
-                          " is too small for float32 coordinates spaced " + detail::format_number(spacing) +
-                          " at this domain's magnitude (need radius >= " +
-                          detail::format_number(inflation / kFloat32MaxInflation) +
-                          "; use float64 or move the domain nearer 0)");
+    throw InvalidArgument(
+        "float32: radius " + detail::format_number(r) + " is too small for float32 coordinates spaced " +
+        detail::format_number(spacing) + " at this domain's magnitude (need radius >= " +
+        detail::format_number(inflation / kFloat32MaxInflation) + "; use float64 or move the domain nearer 0)");
   return (r + std::ldexp(inflation, attempt)) * (1.0 + 1e-12);
 }
 

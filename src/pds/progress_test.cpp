@@ -7,6 +7,7 @@
 
 #include "pds/analysis/report.h"
 #include "pds/registry.h"
+#include "pds/render/render.h"
 
 namespace pds {
 namespace {
@@ -67,13 +68,12 @@ std::vector<std::string> reporting_methods() {
   return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, ProgressOfMethod, ::testing::ValuesIn(reporting_methods()),
-                         [](const auto& info) {
-                           std::string n = info.param;
-                           for (char& c : n)
-                             if (c == '-') c = '_';
-                           return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(Methods, ProgressOfMethod, ::testing::ValuesIn(reporting_methods()), [](const auto& info) {
+  std::string n = info.param;
+  for (char& c : n)
+    if (c == '-') c = '_';
+  return n;
+});
 
 TEST(ProgressOfAnalysis, OneUnitPerSetThenSpectrumAndPairCorrelation) {
   GenerateRequest r;
@@ -100,6 +100,26 @@ TEST(ProgressOfAnalysis, OneUnitPerSetThenSpectrumAndPairCorrelation) {
   }
   options.progress.report = [](double done, double) { return done < 2; };
   EXPECT_THROW(analyze<2>(sets, domain, options), Cancelled);
+}
+
+TEST(ProgressOfRender, BlocksInRoundsTheSameImageAndCancellation) {
+  const auto scene = make_scene("zone-plate", 300, 200);
+  const auto sampler = make_image_sampler("jittered", {.spp = 2, .seed = 4});
+  RenderOptions options;
+  options.block = 8;  // 38 x 25 blocks: several rounds of 64
+  const Image plain = render(*scene, *sampler, 300, 200, options);
+  std::vector<Report> reports;
+  options.progress.report = [&](double done, double total) {
+    reports.push_back({done, total});
+    return true;
+  };
+  EXPECT_EQ(render(*scene, *sampler, 300, 200, options).pixels, plain.pixels);
+  ASSERT_GE(reports.size(), 10u);
+  for (std::size_t i = 1; i < reports.size(); ++i) EXPECT_GT(reports[i].done, reports[i - 1].done);
+  EXPECT_EQ(reports.back().done, 38.0 * 25.0);
+  EXPECT_EQ(reports.back().total, 38.0 * 25.0);
+  options.progress.report = [](double done, double) { return done < 100; };
+  EXPECT_THROW(render(*scene, *sampler, 300, 200, options), Cancelled);
 }
 
 TEST(ProgressPartOf, MapsEachPartIntoTheWhole) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "pds/progress.h"
 #include "pds/render/filter.h"
 #include "pds/render/image_sampler.h"
 #include "pds/render/scene.h"
@@ -32,8 +33,9 @@ struct Image {
 
 struct RenderOptions {
   Filter filter;
-  int threads = 0;  // 0: all hardware threads
-  int block = 32;   // pixels per block side
+  int threads = 0;    // 0: all hardware threads
+  int block = 32;     // pixels per block side
+  Progress progress;  // blocks rendered out of all of them (pds/progress.h)
 };
 
 struct RenderStats {

@@ -41,9 +41,13 @@ inline constexpr double kSurfaceRadius = 1.001;
 /// set is then near-maximal (not proven maximal: k candidates can all miss a
 /// gap). Output order is generation order, which grows outward from the first
 /// sample: a prefix is not spread over the domain.
-/// With a count N: the finished set at `radius` is thinned to a uniformly
-/// random subset of exactly N samples, in generation order; fewer than N is
-/// InvalidArgument. A radius larger than the domain is valid: one sample.
+/// With a count N: the radius is searched upward from `radius` until a finished
+/// set holds N to 1.02 N samples (at most 8 sets; each radius tried is at
+/// least `radius`, so the minimum distance holds), and weighted sample
+/// elimination (samplers/elimination.h) removes the surplus from the most
+/// crowded places; exactly N samples, in generation order, with the spectrum
+/// of a finished set. Fewer than N at `radius` is InvalidArgument. A radius
+/// larger than the domain is valid: one sample.
 /// Invalid (InvalidArgument): radius not positive and finite, k < 1, a count
 /// of 0 or one that does not fit, more than kMaxGridCells background cells.
 template <int D>

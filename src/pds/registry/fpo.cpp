@@ -23,16 +23,16 @@ const Method& fpo_method() {
       .square_torus_only = true,
       .dims = {2, 2},
       .memory_ratio = 13,
-      .params = {{"sweeps", 100, 1, 100000, true, "most sweeps (each moves every point once)"},
-                 {"tolerance", 1e-4, 0, 1, false,
+      .params = {{"sweeps", 1000, 1, 100000, true, "most sweeps (each moves every point once)"},
+                 {"tolerance", 1e-5, 0, 1, false,
                   "stop after a sweep that grows the minimum distance by less than this fraction"},
                  {"start", 0, 0, 1, true, "starting set: 0 white noise, 1 sample elimination (fewer sweeps)"}},
       .run =
           [](const GenerateRequest& r) {
             const Domain<2> domain = r.domain<2>();
             FpoParams params;
-            params.sweeps = static_cast<int>(r.param("sweeps", 100));
-            params.tolerance = r.param("tolerance", 1e-4);
+            params.sweeps = static_cast<int>(r.param("sweeps", 1000));
+            params.tolerance = r.param("tolerance", 1e-5);
             params.progress = r.progress;
             if (r.param("start", 0) == 0) return PointCloud::from<2>(fpo(*r.count, domain, params, r.seed).points);
             const PointSet<2> start = elimination<2>({.count = *r.count}, domain, r.seed);

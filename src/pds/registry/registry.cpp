@@ -192,8 +192,8 @@ void validate(const Method& m, const GenerateRequest& r) {
     const double need = peak_memory_estimate(m, r);
     if (need > r.max_memory)
       throw InvalidArgument(m.name + ": the request needs about " + detail::format_number(need / (1 << 20)) +
-                            " MiB at its peak, above the budget of " +
-                            detail::format_number(r.max_memory / (1 << 20)) + " MiB (--max-memory)");
+                            " MiB at its peak, above the budget of " + detail::format_number(r.max_memory / (1 << 20)) +
+                            " MiB (--max-memory)");
   }
   for (const auto& entry : r.params) {
     const std::string& name = entry.first;

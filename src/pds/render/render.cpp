@@ -111,10 +111,18 @@ Image render(const Scene& scene, const ImageSampler& sampler, int width, int hei
     empty += local_empty;
   };
 
-  parallel_for(0, static_cast<std::size_t>(bx_count * by_count), 1, options.threads,
-               [&](std::size_t first, std::size_t last) {
-                 for (std::size_t b = first; b != last; ++b) render_block(static_cast<int>(b));
-               });
+  // With a progress callback the blocks go in about a hundred rounds, each
+  // reported from this thread once done; the image does not depend on them.
+  const auto blocks = static_cast<std::size_t>(bx_count) * static_cast<std::size_t>(by_count);
+  const std::size_t round = options.progress ? std::max<std::size_t>(blocks / 100, 64) : blocks;
+  ProgressReporter progress(options.progress, static_cast<double>(blocks));
+  for (std::size_t start = 0; start < blocks; start += round) {
+    parallel_for(start, std::min(blocks, start + round), 1, options.threads, [&](std::size_t first, std::size_t last) {
+      for (std::size_t b = first; b != last; ++b) render_block(static_cast<int>(b));
+    });
+    progress.update(static_cast<double>(std::min(blocks, start + round)));
+  }
+  progress.finish();
   if (stats) {
     stats->samples = samples.load();
     stats->empty_pixels = empty.load();

@@ -52,6 +52,7 @@
 #include "pds/grid_neighbourhood.h"
 #include "pds/limits.h"
 #include "pds/rng.h"
+#include "pds/samplers/elimination.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/sizing.h"
 #include "pds/detail/instantiate.h"
@@ -459,19 +460,38 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, st
                          : grow<D, false>(domain, radius, k, surface, seed);
 }
 
-// A uniformly random subset of `count` points, kept in their order.
+// Count mode. A finished set at the radius holds more than the count; taking
+// a subset of it thins the pattern (a uniformly random subset adds white
+// noise: low-frequency power 0.30 against 0.11 at the method's own radius, 2D box,
+// 1024 points). So the radius is searched upward (the count falls as r^-D)
+// until a finished set holds at most kCountSurplus more than the count, by
+// the count's scaling and bisection between a radius that holds the count and
+// one that does not, at most kCountSearchSteps sets; weighted sample
+// elimination (samplers/elimination.h) then removes the few extra from the
+// most crowded places. Every radius tried is at least params.radius, so the
+// minimum distance still holds; each set is grown from the same seed.
+constexpr double kCountSurplus = 0.02;
+constexpr int kCountSearchSteps = 8;
+
 template <int D>
-PointSet<D> thin(const PointSet<D>& points, std::uint64_t count, std::uint64_t seed) {
-  std::vector<std::uint32_t> index(points.size());
-  for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<std::uint32_t>(i);
-  Rng rng(seed, {0x7468696e});  // "thin": a stream apart from the sampling's
-  for (std::size_t i = 0; i < count; ++i) std::swap(index[i], index[i + rng.below(index.size() - i)]);
-  index.resize(count);
-  std::sort(index.begin(), index.end());
-  PointSet<D> out;
-  out.reserve(count);
-  for (std::uint32_t i : index) out.push_back(points[i]);
-  return out;
+PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<D>& domain, const BridsonParams& params,
+                          std::uint64_t seed) {
+  const auto n = static_cast<double>(count);
+  const double most = n * (1.0 + kCountSurplus);
+  double holds = params.radius, fails = std::numeric_limits<double>::infinity();
+  for (int step = 0; step != kCountSearchSteps && static_cast<double>(points.size()) > most; ++step) {
+    // Aim at half the allowed surplus, inside the bracket.
+    double next = holds * std::pow(static_cast<double>(points.size()) / (n * (1.0 + kCountSurplus / 2)), 1.0 / D);
+    if (!(next < fails)) next = std::sqrt(holds * fails);
+    PointSet<D> grown = grow(domain, next, params.k, params.surface, seed);
+    if (grown.size() >= count) {
+      holds = next;
+      points = std::move(grown);
+    } else {
+      fails = next;
+    }
+  }
+  return eliminate(points, count, domain, {}, /*progressive=*/false);
 }
 
 template <int D>
@@ -505,7 +525,7 @@ PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::u
                           detail::format_number(params.radius) + " (k " + std::to_string(params.k) +
                           "), fewer than the " + std::to_string(*params.count) +
                           " requested; ask for fewer points or a smaller radius");
-  return thin(points, *params.count, seed);
+  return trim_to_count(std::move(points), *params.count, domain, params, seed);
 }
 
 #define PDS_INSTANTIATE(D) template PointSet<D> bridson<D>(const BridsonParams&, const Domain<D>&, std::uint64_t);

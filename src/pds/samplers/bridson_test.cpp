@@ -3,10 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <vector>
 
 #include "pds/analysis/distance.h"
 #include "pds/analysis/relative_radius.h"
+#include "pds/analysis/spectrum.h"
 #include "pds/error.h"
+#include "pds/rng.h"
 #include "pds/samplers/sizing.h"
 #include "pds/registry.h"
 
@@ -78,7 +82,7 @@ TEST(Bridson, CountGivesExactlyThatMany) {
     r.dim = 3;
     EXPECT_EQ(generate("bridson", r).size(), n);
   }
-  // With a radius too: a uniform subset of the finished set, at that radius.
+  // With a radius too: the radius is only ever grown, so it still holds.
   BridsonParams params;
   params.radius = 0.03;
   params.count = 500;
@@ -86,6 +90,46 @@ TEST(Bridson, CountGivesExactlyThatMany) {
   const auto points = bridson(params, domain, 9);
   ASSERT_EQ(points.size(), 500u);
   expect_poisson_disk(points, domain, 0.03);
+}
+
+// Mean radial power at frequencies up to half the inverse mean spacing, over
+// 8 sets of one method's points on the unit torus.
+double low_frequency_power(const std::function<PointSet<2>(std::uint64_t seed)>& make) {
+  const auto domain = Domain<2>::unit(true);
+  std::vector<PointSet<2>> sets;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) sets.push_back(make(seed));
+  const RadialSpectrum r = radial_average(periodogram<2>(sets, domain, {.max_frequency = 16}));
+  double sum = 0;
+  int n = 0;
+  for (std::size_t b = 0; b < r.power.size(); ++b)
+    if (r.frequency[b] <= 0.5) {
+      sum += r.power[b];
+      ++n;
+    }
+  return sum / n;
+}
+
+// A count is met by searching the radius and eliminating the few extra, so
+// the spectrum is the finished set's; a uniformly random subset of the set at
+// the count's starting radius (the obvious alternative) has far more
+// low-frequency power (white noise added).
+TEST(Bridson, CountKeepsTheSpectrumOfAFinishedSet) {
+  const auto domain = Domain<2>::unit(true);
+  constexpr std::uint64_t n = 512;
+  const double own = low_frequency_power(
+      [&](std::uint64_t seed) { return bridson<2>({.radius = radius_for_count(n, domain, 0.73)}, domain, seed); });
+  const double counted = low_frequency_power([&](std::uint64_t seed) {
+    return bridson<2>({.radius = radius_for_count(n, domain, kBridsonCountRho), .count = n}, domain, seed);
+  });
+  const double random_subset = low_frequency_power([&](std::uint64_t seed) {
+    PointSet<2> all = bridson<2>({.radius = radius_for_count(n, domain, kBridsonCountRho)}, domain, seed);
+    Rng rng(seed);
+    for (std::size_t i = 0; i < n; ++i) std::swap(all[i], all[i + rng.below(all.size() - i)]);
+    all.resize(n);
+    return all;
+  });
+  EXPECT_LT(counted, 1.2 * own) << "own radius " << own;
+  EXPECT_GT(random_subset, 2.0 * counted) << "random subset " << random_subset;
 }
 
 TEST(Bridson, CountThatCannotFitIsRejected) {

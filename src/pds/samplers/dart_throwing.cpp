@@ -86,8 +86,7 @@ PointSet<D> throw_darts(const DartThrowingParams& params, const Domain<D>& domai
   std::uint64_t placed = 0, failures = 0;
   // With a radius alone the run ends on a streak of misses: its share of
   // the bound takes over from the count (typical_count) as the set fills.
-  const double expected =
-      params.count ? static_cast<double>(wanted) : typical_count(domain.volume(), params.radius, D);
+  const double expected = params.count ? static_cast<double>(wanted) : typical_count(domain.volume(), params.radius, D);
   ProgressReporter progress(params.progress, expected);
   while (placed < wanted) {
     progress.update(params.count ? static_cast<double>(placed)

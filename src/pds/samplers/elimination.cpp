@@ -47,6 +47,7 @@
 
 #include "pds/analysis/relative_radius.h"
 #include "pds/detail/format.h"
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/grid.h"
 #include "pds/grid_neighbourhood.h"
@@ -85,11 +86,13 @@ template <int D>
 class CellIndex {
  public:
   CellIndex(const Domain<D>& domain, std::span<const Point<D>> points, double reach) : domain_(domain), reach_(reach) {
-    // Cells of edge about reach / 2, fewer where the grid would outgrow the
-    // points (a thin axis, or a tiny set in a large domain).
+    // Cells of edge about reach / 2 (a window of 5 cells an axis) up to 3D,
+    // reach beyond (3 an axis: 5^D cells would outnumber the points), fewer
+    // where the grid would outgrow the points (a thin axis, or a tiny set in
+    // a large domain).
     const double max_cells = std::min<double>(kMaxGridCells, 4.0 * static_cast<double>(points.size()) + 64.0);
     std::array<int, D> cells;
-    double edge = reach / 2.0;
+    double edge = D <= 3 ? reach / 2.0 : reach;
     while (true) {
       double total = 1.0;
       for (int i = 0; i < D; ++i) {
@@ -128,6 +131,7 @@ class CellIndex {
   }
 
   std::size_t size() const { return points_.size(); }
+
   const Point<D>& point(std::uint32_t k) const { return points_[k]; }
   std::uint32_t original(std::uint32_t k) const { return original_[k]; }
 
@@ -331,9 +335,11 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   return eliminate(candidates, params.count, domain, params.weights, params.progressive);
 }
 
-template PointSet<2> elimination<2>(const EliminationParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> elimination<3>(const EliminationParams&, const Domain<3>&, std::uint64_t);
-template PointSet<2> eliminate<2>(const PointSet<2>&, std::uint64_t, const Domain<2>&, const EliminationWeights&, bool);
-template PointSet<3> eliminate<3>(const PointSet<3>&, std::uint64_t, const Domain<3>&, const EliminationWeights&, bool);
+#define PDS_INSTANTIATE(D)                                                                                          \
+  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                   \
+  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, \
+                                    bool);
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -42,9 +42,10 @@ TEST(Fpo, MinimumDistanceNeverDecreasesAcrossSweeps) {
 TEST(Fpo, ReachesTheOptimizedRelativeRadius) {
   const auto domain = Domain<2>::unit(true);
   const FpoResult r = fpo(1024, domain, {}, 1);
-  EXPECT_GE(rho_of(r.points, domain), 0.9);
+  // Schlömer et al. report ~0.93; the default stop rule ends near 0.928.
+  EXPECT_GE(rho_of(r.points, domain), 0.925);
   for (std::size_t s = 1; s < r.sweeps.size(); ++s) EXPECT_GE(r.sweeps[s].min_distance, r.sweeps[s - 1].min_distance);
-  EXPECT_LE(r.sweeps.size(), 101u);
+  EXPECT_LE(r.sweeps.size(), 1001u);
   // The stop rule: a sweep that grows the minimum distance by less than the
   // tolerance is the last.
   const FpoResult early = fpo(1024, domain, {.sweeps = 100, .tolerance = 0.05}, 1);
