@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "analysis_common.h"
 #include "commands.h"
 #include "pds/detail/format.h"
 #include "pds/error.h"
@@ -104,7 +105,7 @@ void run_unbounded(const UnboundedOptions& o) {
   const UnboundedField<D> field = field_of<D>(o);
   UnboundedStats stats;
   const PointSet<D> points = field.sample(region_of<D>(o), &stats);
-  write_points(o.output, PointCloud::from(points));
+  write_output(o.output, PointCloud::from(points));
   if (o.output == "-") return;
   nlohmann::ordered_json out;
   out["file"] = o.output;

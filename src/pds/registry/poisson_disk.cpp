@@ -25,7 +25,7 @@ template <class Sample>
 auto with_shrinking_radius(double& radius, Sample&& sample) {
   for (int attempt = 0;; ++attempt) {
     try {
-      return sample();
+      return sample(attempt);
     } catch (const InvalidArgument&) {
       if (attempt == 20) throw;
       radius *= 0.95;
@@ -49,7 +49,14 @@ PointSet<D> run_radius_method(const GenerateRequest& r, const Domain<D>& domain,
     return sample(params);
   }
   params.radius = radius_for_count(*r.count, domain, rho);
-  return with_shrinking_radius(params.radius, [&] { return sample(params); });
+  // Each attempt reports within its own share, so progress never goes back.
+  Progress progress;
+  if constexpr (requires { params.progress; }) progress = params.progress;
+  return with_shrinking_radius(params.radius, [&](int attempt) {
+    if constexpr (requires { params.progress; })
+      params.progress = part_of(progress, static_cast<std::size_t>(attempt), 21);
+    return sample(params);
+  });
 }
 
 }  // namespace

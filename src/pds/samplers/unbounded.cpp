@@ -339,7 +339,7 @@ UnboundedField<D>::UnboundedField(const UnboundedParams& params, std::uint64_t s
                             " holds " + detail::format_number(n) + " cells of edge radius/sqrt(D) = " +
                             detail::format_number(edges_[a]) + "; it needs 5 to 2^40 (use ebeida for small tori)");
     cells_[a] = static_cast<std::int64_t>(n);
-    edges_[a] = torus.extent(a) / n;  // <= radius/sqrt(D): still one sample a cell, reach 2 cells
+    edges_[a] = torus.extent(a) / n;  // >= radius/sqrt(D), below 1.25 of it (n >= 5): the reach still covers r
   }
 }
 
@@ -369,9 +369,19 @@ PointSet<D> UnboundedField<D>::sample(const Domain<D>& region, UnboundedStats* s
       hi[a] = std::min<std::int64_t>(hi[a], cells_[a] - 1);
     }
   }
-  require_point_budget(packing_count(region.volume(), params_.radius, D), D, params_.max_points,
+  // The memo spans the region's cells and a margin of kDenseMargin cells a
+  // side: a long, thin region has far more cells than its volume says, so
+  // the budget counts the memo's box as well (computed in double: the cell
+  // product of an absurd region would wrap a size_t).
+  double memo_volume = 1.0;
+  for (int a = 0; a < D; ++a)
+    memo_volume *= (static_cast<double>(hi[a] - lo[a]) + 1.0 + 2.0 * kDenseMargin) * edges_[a];
+  require_point_budget(std::max(packing_count(region.volume(), params_.radius, D),
+                                packing_count(memo_volume, params_.radius, D)),
+                       D, params_.max_points,
                        "radius " + detail::format_number(params_.radius) + " over a region of volume " +
-                           detail::format_number(region.volume()),
+                           detail::format_number(region.volume()) + " (" + detail::format_number(memo_volume) +
+                           " with the cells it touches)",
                        // The memo's measured bytes a sample over D doubles (1.3 KB in 2D, 6.6 KB
                        // in 3D at 8 darts a cell; docs/unbounded.md), with margin.
                        D == 2 ? 96.0 : 320.0);

@@ -184,7 +184,9 @@ TEST(Unbounded, RefusesBadInput) {
     EXPECT_THROW(UnboundedField<2>({.radius = r}, 1), InvalidArgument) << r;
   for (double t : {0.0, -1.0, nan, 65.0})
     EXPECT_THROW(UnboundedField<2>({.radius = 1.0, .darts_per_cell = t}, 1), InvalidArgument) << t;
-  const UnboundedField<2> field({.radius = 1.0, .max_points = 1000}, 1);
+  // The budget counts the cells the region touches (a margin of 12 a side):
+  // 10 x 10 touches room for 1,166 points, 100 x 100 for 19,000.
+  const UnboundedField<2> field({.radius = 1.0, .max_points = 2000}, 1);
   EXPECT_THROW(field.sample(box<2>({{0.0, 0.0}}, {{0.0, 1.0}})), InvalidArgument);   // empty
   EXPECT_THROW(field.sample(box<2>({{0.0, 2.0}}, {{1.0, 1.0}})), InvalidArgument);   // inverted
   EXPECT_THROW(field.sample(box<2>({{0.0, nan}}, {{1.0, 1.0}})), InvalidArgument);   // not finite
@@ -192,6 +194,8 @@ TEST(Unbounded, RefusesBadInput) {
   EXPECT_THROW(field.sample(box<2>({{0.0, 0.0}}, {{100.0, 100.0}})), InvalidArgument);  // over max_points
   EXPECT_THROW(field.sample(box<2>({{1e13, 0.0}}, {{1e13 + 1.0, 1.0}})), InvalidArgument);  // too far out
   EXPECT_NO_THROW(field.sample(box<2>({{0.0, 0.0}}, {{10.0, 10.0}})));
+  // Long and thin: a small volume, but a memo of 10^8 cells.
+  EXPECT_THROW(field.sample(box<2>({{0.0, 0.0}}, {{1e7, 1e-6}})), InvalidArgument);
 }
 
 // On a torus: chunks across the wrap, distances that wrap.
