@@ -45,6 +45,7 @@
 #include <sstream>
 #include <string>
 
+#include "elimination_detail.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/detail/format.h"
 #include "pds/detail/instantiate.h"
@@ -67,7 +68,18 @@ class WeightFunction {
 
   [[gnu::always_inline]] double operator()(double d2) const {
     const double d = std::max(std::sqrt(d2), d_min_);
-    const double x = std::max(0.0, 1.0 - d * inv_d_max_);
+    return power(std::max(0.0, 1.0 - d * inv_d_max_));
+  }
+
+  /// The weight of a pair whose d_max and d_min are scaled by `scale` (the
+  /// larger of the two samples' scales).
+  [[gnu::always_inline]] double operator()(double d2, double scale) const {
+    const double d = std::max(std::sqrt(d2), d_min_ * scale);
+    return power(std::max(0.0, 1.0 - d * inv_d_max_ / scale));
+  }
+
+ private:
+  [[gnu::always_inline]] double power(double x) const {
     if (alpha8_) {
       const double x2 = x * x, x4 = x2 * x2;
       return x4 * x4;
@@ -75,7 +87,6 @@ class WeightFunction {
     return std::pow(x, alpha_);
   }
 
- private:
   double inv_d_max_, d_min_, alpha_;
   bool alpha8_;
 };
@@ -234,16 +245,32 @@ class WeightHeap {
 
 // One round: eliminates `points` down to `keep`. Returns indices into
 // `points`: the survivors first (in input order), then the eliminated, the
-// last eliminated first.
-template <int D>
-std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::size_t keep, const Domain<D>& domain,
-                                           double d_max, const WeightFunction& weight) {
-  const CellIndex<D> index(domain, points, d_max);
+// last eliminated first. `scale` is empty (one d_max for all) or one factor
+// a point: a pair's d_max and d_min grow by the larger of its two factors.
+template <int D, bool Scaled>
+std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::span<const double> scale,
+                                           std::size_t keep, const Domain<D>& domain, double d_max,
+                                           const WeightFunction& weight) {
+  const double largest = Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0;
+  const CellIndex<D> index(domain, points, d_max * largest);
   const std::size_t n = index.size();
+  std::vector<double> sorted_scale;
+  if constexpr (Scaled) {
+    sorted_scale.resize(n);
+    for (std::uint32_t k = 0; k < n; ++k) sorted_scale[k] = scale[index.original(k)];
+  }
+  // The weight of the pair (self, k) at squared distance d2; zero beyond the
+  // pair's own d_max.
+  auto pair_weight = [&](std::uint32_t self, std::uint32_t k, double d2) {
+    if constexpr (Scaled)
+      return weight(d2, std::max(sorted_scale[self], sorted_scale[k]));
+    else
+      return weight(d2);
+  };
   std::vector<double> weights(n, 0.0);
   for (std::uint32_t k = 0; k < n; ++k) {
     double sum = 0.0;
-    index.for_each_near(k, [&](std::uint32_t, double d2) { sum += weight(d2); });
+    index.for_each_near(k, [&](std::uint32_t j, double d2) { sum += pair_weight(j, k, d2); });
     weights[k] = sum;
   }
   WeightHeap heap(weights);
@@ -255,7 +282,7 @@ std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std
     // The pair's weight is evaluated from the neighbour's side, as when it
     // was added (distance2 is symmetric, so the terms cancel exactly anyway).
     index.for_each_near(gone, [&](std::uint32_t k, double d2) {
-      if (heap.contains(k)) heap.decrease(k, weight(d2));
+      if (heap.contains(k)) heap.decrease(k, pair_weight(gone, k, d2));
     });
   }
   std::vector<std::uint32_t> order;
@@ -269,6 +296,14 @@ std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std
   return order;
 }
 
+template <int D>
+std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::span<const double> scale,
+                                           std::size_t keep, const Domain<D>& domain, double d_max,
+                                           const WeightFunction& weight) {
+  return scale.empty() ? eliminate_round<D, false>(points, scale, keep, domain, d_max, weight)
+                       : eliminate_round<D, true>(points, scale, keep, domain, d_max, weight);
+}
+
 void validate(const EliminationWeights& w) {
   if (!(w.alpha > 0.0) || !std::isfinite(w.alpha))
     throw InvalidArgument("elimination: alpha must be positive and finite, got " + detail::format_number(w.alpha));
@@ -279,6 +314,41 @@ void validate(const EliminationWeights& w) {
 }
 
 }  // namespace
+
+namespace detail {
+
+template <int D>
+std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, std::span<const double> scale,
+                                             std::size_t count, const Domain<D>& domain, double d_max,
+                                             const EliminationWeights& weights, bool progressive, int growth_dim) {
+  const double ratio = static_cast<double>(count) / static_cast<double>(points.size());
+  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
+  const WeightFunction first(d_max, d_min, weights.alpha);
+  std::vector<std::uint32_t> kept = eliminate_round<D>(points, scale, count, domain, d_max, first);
+  kept.resize(count);
+  if (!progressive) return kept;
+  PointSet<D> out(count);
+  std::vector<double> out_scale(scale.empty() ? 0 : count);
+  std::vector<std::uint32_t> round(count);
+  for (std::size_t size = count; size >= 2; size /= 2) {
+    for (std::size_t i = 0; i < size; ++i) {
+      out[i] = points[kept[i]];
+      if (!scale.empty()) out_scale[i] = scale[kept[i]];
+    }
+    d_max *= std::pow(2.0, 1.0 / growth_dim);
+    const WeightFunction weight(d_max, d_min, weights.alpha);
+    const std::vector<std::uint32_t> order = eliminate_round<D>(
+        std::span<const Point<D>>(out.data(), size),
+        std::span<const double>(out_scale.data(), scale.empty() ? 0 : size), size / 2, domain, d_max, weight);
+    for (std::size_t i = 0; i < size; ++i) round[i] = kept[order[i]];
+    std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), kept.begin());
+  }
+  return kept;
+}
+
+void validate_elimination_weights(const EliminationWeights& weights) { validate(weights); }
+
+}  // namespace detail
 
 template <int D>
 PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const Domain<D>& domain,
@@ -298,23 +368,11 @@ PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const 
       throw InvalidArgument(os.str());
     }
   const std::size_t n = static_cast<std::size_t>(count);
-  double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
-  const double ratio = static_cast<double>(n) / static_cast<double>(candidates.size());
-  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
-  const WeightFunction first(d_max, d_min, weights.alpha);
-  const std::vector<std::uint32_t> kept = eliminate_round<D>(candidates, n, domain, d_max, first);
+  const double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
+  const std::vector<std::uint32_t> kept =
+      detail::eliminate_indices<D>(candidates, {}, n, domain, d_max, weights, progressive, D);
   PointSet<D> out(n);
   for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
-  if (!progressive) return out;
-  PointSet<D> round(n);
-  for (std::size_t size = n; size >= 2; size /= 2) {
-    d_max *= std::pow(2.0, 1.0 / D);
-    const WeightFunction weight(d_max, d_min, weights.alpha);
-    const std::vector<std::uint32_t> order =
-        eliminate_round<D>(std::span<const Point<D>>(out.data(), size), size / 2, domain, d_max, weight);
-    for (std::size_t i = 0; i < size; ++i) round[i] = out[order[i]];
-    std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), out.begin());
-  }
   return out;
 }
 
@@ -335,9 +393,12 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   return eliminate(candidates, params.count, domain, params.weights, params.progressive);
 }
 
-#define PDS_INSTANTIATE(D)                                                                                          \
-  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                   \
-  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, \
+#define PDS_INSTANTIATE(D)                                                                                             \
+  template std::vector<std::uint32_t> detail::eliminate_indices<D>(std::span<const Point<D>>, std::span<const double>, \
+                                                                   std::size_t, const Domain<D>&, double,              \
+                                                                   const EliminationWeights&, bool, int);              \
+  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                      \
+  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&,    \
                                     bool);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
