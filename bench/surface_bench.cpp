@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "pds/analysis/distance.h"
 #include "pds/samplers/surface.h"
 
 namespace {
@@ -40,11 +41,17 @@ void BM_SurfaceElimination(benchmark::State& state) {
   const int around = triangles / 2 / tube;
   const pds::TriangleMesh mesh = torus(around, tube);
   pds::SurfaceParams params{.count = n, .candidates = static_cast<double>(state.range(2)) / 10.0};
+  pds::SurfaceSamples s;
   for (auto _ : state) {
-    const pds::SurfaceSamples s = pds::sample_surface(mesh, params, 1);
+    s = pds::sample_surface(mesh, params, 1);
     benchmark::DoNotOptimize(s.positions.data());
   }
   state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+  // The relative radius on the surface, (d_min / 2) / sqrt(A / (2 sqrt(3) N)),
+  // d_min in 3D (the torus fits in [-1.3, 1.3]^2 x [-0.3, 0.3]).
+  const auto box = pds::Domain<3>::box({{-1.4, -1.4, -0.4}}, {{1.4, 1.4, 0.4}});
+  const double r_max = std::sqrt(pds::surface_area(mesh) / (2 * std::sqrt(3.0) * static_cast<double>(n)));
+  state.counters["rho"] = pds::min_distance(s.positions, box).distance / 2 / r_max;
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
 }
 BENCHMARK(BM_SurfaceElimination)
