@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "analysis_common.h"
+#include "classes.h"
 #include "commands.h"
 #include "constraints.h"
 #include "mesh.h"
@@ -21,6 +22,7 @@ struct GenerateOptions {
   std::string dtype = "float64";
   ConstraintOptions constraints;
   MeshOptions mesh;
+  ClassOptions classes;
 };
 
 }  // namespace
@@ -40,8 +42,14 @@ void add_generate(CLI::App& app) {
       ->capture_default_str();
   add_constraint_options(*cmd, opt->constraints);
   add_mesh_options(*cmd, opt->mesh);
+  add_class_options(*cmd, opt->classes);
 
   cmd->callback([opt, cmd] {
+    if (classes_requested(opt->classes)) {
+      generate_classes(*cmd, opt->method, opt->classes, opt->generation, opt->output);
+      return;
+    }
+    if (!opt->classes.matrix.empty()) throw InvalidArgument("--class-matrix needs --classes");
     if (mesh_requested(opt->mesh)) {
       generate_on_mesh(*cmd, opt->method, opt->mesh, opt->generation, opt->output);
       return;
