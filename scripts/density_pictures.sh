@@ -12,6 +12,10 @@ python3 scripts/density_inputs.py "$in"
 $pds generate bridson --density $in/face.png --radius-range 0.0035,0.04 --seed 1 -o $in/face.csv
 $pds analyze $in/face.csv --plot $img/density-face.png --dot-radius 0.0018 >/dev/null
 
+# The face again, by weighted sample elimination (the field sizes the count).
+$pds generate elimination --density $in/face.png --radius-range 0.0035,0.04 --seed 1 -o $in/face-elim.csv
+$pds analyze $in/face-elim.csv --plot $img/density-face-elimination.png --dot-radius 0.0018 >/dev/null
+
 # The same field from a gradient, by dart throwing, inverted (light is dense).
 $pds generate dart-throwing --density $in/gradient.png --radius-range 0.006,0.03 --invert --seed 1 -o $in/gradient.csv
 $pds analyze $in/gradient.csv --plot $img/density-gradient.png --dot-radius 0.0025 >/dev/null

@@ -72,6 +72,17 @@ expect_exit 2 "fixed points have dimension 3" -- generate bridson --fixed "$tmp/
 printf 'x,y\n0.5,zz\n' >"$tmp/bad.csv"
 expect_exit 2 "bad.csv" -- generate bridson --fixed "$tmp/bad.csv" --radius 0.1
 
+# Elimination with a density (count from the field) and with a mask (exact count).
+expect_exit 0 "" -- generate elimination --density "$in/gradient.png" --radius-range 0.01,0.04 --seed 2 -o "$tmp/e.csv"
+centre=$(awk -F, 'NR > 1 && $1 > 0.4 && $1 < 0.6 && $2 > 0.4 && $2 < 0.6' "$tmp/e.csv" | wc -l)
+corner=$(awk -F, 'NR > 1 && $1 < 0.2 && $2 < 0.2' "$tmp/e.csv" | wc -l)
+[[ $centre -gt $((3 * corner)) && $corner -gt 0 ]] && ok || bad "elimination density: centre $centre vs corner $corner"
+expect_exit 0 "" -- generate elimination --mask "$in/mask.png" --count 2000 --bounds 0,0,10,10 -o "$tmp/em.csv"
+inband=$(awk -F, 'NR > 1 && ($1 < 0.4 || $1 > 9.3 || (($1 - 4) ^ 2 < 1.9 && ($2 - 5) ^ 2 < 1.9))' "$tmp/em.csv" | wc -l)
+[[ $inband -eq 0 && $(wc -l <"$tmp/em.csv") -eq 2001 ]] && ok || bad "elimination mask: $inband outside"
+expect_exit 2 "fixed points are not taken" -- generate elimination --fixed "$tmp/out.csv" --count 10
+expect_exit 2 "elimination needs --count" -- generate elimination --mask "$in/mask.png"
+
 # Several classes (Wei 2010): a class column, counts about 16 : 4 : 1, the
 # same seed the same bytes, every pair at least its classes' distance apart
 # (all pairs, with the given matrix: within 0.03 and 0.05, across 0.04).

@@ -124,7 +124,8 @@ void validate_params(const Method& m, const std::map<std::string, double>& param
 namespace {
 
 // A radius field, a mask, fixed points: only where the method takes them,
-// and sized by the field's range or a radius, never by a count.
+// and sized by the field's range or a radius, never by a count (except for
+// a method that takes only a count: elimination).
 void validate_constraints(const Method& m, const GenerateRequest& r) {
   const RequestConstraints& c = r.constraints;
   if (!c.active()) return;
@@ -137,7 +138,7 @@ void validate_constraints(const Method& m, const GenerateRequest& r) {
   if (c.fixed.size() > 0 && c.fixed.dim != r.dim)
     throw InvalidArgument("fixed points have dimension " + std::to_string(c.fixed.dim) + ", the request " +
                           std::to_string(r.dim));
-  if (r.count)
+  if (r.count && m.takes_radius)
     throw InvalidArgument(m.name +
                           ": --count is not taken with a density, a mask or fixed points (size by the radius)");
   // Rounding would move the fixed points and could break the pair rule.

@@ -52,6 +52,7 @@
 #include "pds/error.h"
 #include "pds/grid.h"
 #include "pds/grid_neighbourhood.h"
+#include "pds/limits.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 
@@ -59,6 +60,9 @@ namespace pds {
 namespace {
 
 constexpr std::size_t kMaxCandidates = std::size_t{1} << 31;
+// Elimination's typical relative radius from 5N candidates (2D 0.69, 3D
+// 0.68; docs/elimination.md): a radius field sizes the count by it.
+constexpr double kTypicalRho = 0.69;
 
 // The paper's weight of a neighbour at squared distance d2 < d_max^2.
 class WeightFunction {
@@ -393,7 +397,83 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   return eliminate(candidates, params.count, domain, params.weights, params.progressive);
 }
 
+template <int D>
+PointSet<D> elimination(const EliminationParams& params, const SamplingConstraints<D>& constraints,
+                        const Domain<D>& domain, std::uint64_t seed) {
+  if (!constraints.fixed.empty())
+    throw InvalidArgument("elimination: fixed points are not taken (bridson and dart-throwing keep them)");
+  if (!constraints.active()) return elimination(params, domain, seed);
+  domain.validate();
+  validate(params.weights);
+  if (!(params.candidates >= 1.0) || !std::isfinite(params.candidates))
+    throw InvalidArgument("elimination: candidates must be a factor of at least 1, got " +
+                          detail::format_number(params.candidates));
+  const bool field = static_cast<bool>(constraints.radius);
+  const double rmin = constraints.rmin, rmax = constraints.rmax;
+  if (field) {
+    require_radius(rmin, "rmin");
+    require_radius(rmax, "rmax");
+    if (!(rmin <= rmax))
+      throw InvalidArgument("elimination: the radius range needs rmin <= rmax, got " + detail::format_number(rmin) +
+                            " > " + detail::format_number(rmax));
+  }
+  // The weight of a point: 0 outside the mask, else (rmin / r(x))^D in (0, 1].
+  auto weight_at = [&](const Point<D>& p) {
+    if (constraints.inside && !constraints.inside(p)) return 0.0;
+    if (!field) return 1.0;
+    const double r = constraints.radius(p);
+    if (std::isnan(r)) throw InvalidArgument("elimination: the radius field returned NaN");
+    return std::pow(rmin / std::clamp(r, rmin, rmax), D);
+  };
+  std::uint64_t count = params.count;
+  if (count == 0) {
+    if (!field) throw InvalidArgument("elimination: count must be at least 1, got 0");
+    // The weighted volume from a pilot of uniform draws (a stream of its own).
+    constexpr int kPilot = 65536;
+    Rng pilot(seed, {1});
+    double sum = 0.0;
+    for (int i = 0; i < kPilot; ++i) sum += weight_at(uniform_point(pilot, domain));
+    if (sum == 0.0) throw InvalidArgument("elimination: the mask leaves no room in the domain");
+    const double volume = domain.volume() * sum / kPilot;
+    count = static_cast<std::uint64_t>(
+        std::max(1.0, std::round(volume / packing_volume_per_point(rmin / (2.0 * kTypicalRho), D))));
+  }
+  const double m_real = std::ceil(params.candidates * static_cast<double>(count));
+  if (m_real > static_cast<double>(kMaxCandidates))
+    throw InvalidArgument("elimination: " + detail::format_number(m_real) + " candidates, more than 2^31");
+  const auto m = static_cast<std::size_t>(m_real);
+  const double bound = 64.0 * m_real * (field ? std::pow(rmax / rmin, D) : 1.0) + 1e6;
+  Rng rng(seed);
+  PointSet<D> candidates;
+  candidates.reserve(m);
+  std::vector<double> scale;
+  if (field) scale.reserve(m);
+  double draws = 0.0;
+  while (candidates.size() < m) {
+    if (++draws > bound)
+      throw Failure("elimination: " + detail::format_number(bound) + " draws gave " +
+                    std::to_string(candidates.size()) + " of " + std::to_string(m) +
+                    " candidates (the mask leaves too little room)");
+    const Point<D> p = uniform_point(rng, domain);
+    const double w = weight_at(p);
+    if (w > 0.0 && (w >= 1.0 || rng.uniform() < w)) {
+      candidates.push_back(p);
+      if (field) scale.push_back(std::pow(w, -1.0 / D));
+    }
+  }
+  const double volume = domain.volume() * static_cast<double>(m) / draws;
+  const auto n = static_cast<std::size_t>(count);
+  const double d_max = 2.0 * max_packing_radius(volume, n, D);
+  const std::vector<std::uint32_t> kept =
+      detail::eliminate_indices<D>(candidates, scale, n, domain, d_max, params.weights, params.progressive, D);
+  PointSet<D> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
+  return out;
+}
+
 #define PDS_INSTANTIATE(D)                                                                                             \
+  template PointSet<D> elimination<D>(const EliminationParams&, const SamplingConstraints<D>&, const Domain<D>&,       \
+                                      std::uint64_t);                                                                  \
   template std::vector<std::uint32_t> detail::eliminate_indices<D>(std::span<const Point<D>>, std::span<const double>, \
                                                                    std::size_t, const Domain<D>&, double,              \
                                                                    const EliminationWeights&, bool, int);              \
