@@ -13,10 +13,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <istream>
+#include <sstream>
 #include <vector>
 
 #include "pds/error.h"
@@ -44,9 +46,41 @@ const char* format_name(MeshFormat format) {
   return "?";
 }
 
+// CGAL's OFF reader reserves memory for the counts its header declares
+// (3 * 10^8 vertices took 7 GB before reading one): the counts are checked
+// against the bytes the stream holds first (every vertex and face takes at
+// least 2 bytes in any OFF form). The stream is left where it was.
+void check_off_counts(std::istream& in, const std::string& name) {
+  const std::streampos start = in.tellg();
+  if (start < 0) return;  // not seekable: nothing to measure against
+  in.seekg(0, std::ios::end);
+  const std::streamoff bytes = in.tellg() - start;
+  in.seekg(start);
+  std::vector<std::string> tokens;
+  std::string line;
+  for (int lines = 0; lines < 64 && tokens.size() < 4 && std::getline(in, line); ++lines) {
+    const std::size_t hash = line.find('#');
+    std::istringstream words(line.substr(0, hash));
+    for (std::string w; tokens.size() < 4 && words >> w;) tokens.push_back(w);
+  }
+  in.clear();
+  in.seekg(start);
+  // The keyword (OFF, COFF, NOFF, ...) may be followed on its line by the counts.
+  if (tokens.size() < 3 || tokens[0].find("OFF") == std::string::npos) return;
+  for (std::size_t k = 1; k < 3; ++k) {
+    char* end = nullptr;
+    const double count = std::strtod(tokens[k].c_str(), &end);
+    if (end != tokens[k].c_str() + tokens[k].size()) return;  // not counts: CGAL decides
+    if (count > static_cast<double>(bytes) / 2.0)
+      throw InvalidArgument(name + ": the OFF header declares " + tokens[k] + (k == 1 ? " vertices" : " faces") +
+                            " in a file of " + std::to_string(bytes) + " bytes");
+  }
+}
+
 }  // namespace
 
 TriangleMesh read_mesh(std::istream& in, MeshFormat format, const std::string& name) {
+  if (format == MeshFormat::Off) check_off_counts(in, name);
   std::vector<CgalPoint> points;
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;

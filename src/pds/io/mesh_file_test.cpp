@@ -78,6 +78,11 @@ TEST(MeshFile, BadFilesNameTheProblem) {
   EXPECT_NE(message("garbage\x01\x02", MeshFormat::Ply), "no error");
   EXPECT_NE(message("OFF\n3 1 0\n0 0 0\n1 0 0\n", MeshFormat::Off), "no error");
   EXPECT_NE(message("OFF\n4000000000 1 0\n", MeshFormat::Off), "no error");
+  // CGAL would reserve memory for the declared counts: refused first.
+  EXPECT_EQ(message("OFF\n300000000 300000000 0\n", MeshFormat::Off),
+            "test: the OFF header declares 300000000 vertices in a file of 26 bytes");
+  EXPECT_EQ(message("# a comment\nOFF 3 90000 0\n0 0 0\n1 0 0\n0 1 0\n", MeshFormat::Off),
+            "test: the OFF header declares 90000 faces in a file of 44 bytes");
   EXPECT_NE(message("ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty "
                     "float y\nproperty float z\nend_header\n",
                     MeshFormat::Ply),
