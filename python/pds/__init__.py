@@ -134,20 +134,22 @@ def generate(
     samples may go; ``fixed``, an (N, dim) array of points kept as the first
     N rows of the result. No sample's centre lies within another's radius
     (the larger of the two at their positions). The radius sizes the set:
-    ``count`` is not taken with them, nor float32.
+    ``count`` is not taken with them, nor float32. ``elimination`` takes
+    ``density`` and ``mask`` too (not ``fixed``), with ``count`` or, with a
+    density and no count, the count the field asks for; it promises no
+    minimum distance.
     """
     dt = _np.dtype(dtype)
     if dt not in (_np.float64, _np.float32):
         raise ValueError(f"dtype must be float64 or float32, got {dt}")
     if density is not None or mask is not None or fixed is not None or radius_range is not None or invert:
-        if count is not None:
-            raise ValueError(f"{method}: count is not taken with a density, a mask or fixed points (size by the radius)")
         if dt == _np.float32:
             raise ValueError(f"{method}: float32 is not taken with a density, a mask or fixed points (use float64)")
         if radius_range is not None and len(radius_range) != 2:
             raise ValueError(f"radius_range must be (rmin, rmax), got {radius_range!r}")
         return _pds.generate_constrained(
             method,
+            None if count is None else _uint(count, "count"),
             None if radius is None else float(radius),
             *_request_args(method, dim, bounds, torus, seed, threads, max_points, params),
             None if density is None else _np.asarray(density, dtype=float),
