@@ -46,7 +46,8 @@ void add_field_options(CLI::App& cmd, UnboundedOptions& o) {
                  "--region must lie inside it")
       ->delimiter(',');
   cmd.add_option("--darts-per-cell", o.darts_per_cell,
-                 "Expected darts a cell of edge r/sqrt(D): more darts, fewer gaps (docs/unbounded.md)")
+                 "Expected darts a cell of edge r/sqrt(D) before open cells are refined: only the work depends on it "
+                 "(docs/unbounded.md)")
       ->capture_default_str();
   cmd.add_option("--max-points", o.max_points, "Refuse regions that could hold more points")->capture_default_str();
 }
@@ -96,6 +97,7 @@ nlohmann::ordered_json stats_json(const UnboundedStats& s) {
   j["cells_touched"] = s.cells_touched;
   j["darts_settled"] = s.darts_settled;
   j["max_depth"] = s.max_depth;
+  j["max_level"] = s.max_level;
   j["margin_cells"] = s.margin_cells;
   return j;
 }
@@ -202,11 +204,12 @@ void run_chunks(const UnboundedOptions& o) {
     }
   });
   std::uint64_t count = 0;
-  int max_margin = 0, max_depth = 0;
+  int max_margin = 0, max_depth = 0, max_level = 0;
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < parts.size(); ++k) {
     max_margin = std::max(max_margin, stats[k].margin_cells);
     max_depth = std::max(max_depth, stats[k].max_depth);
+    max_level = std::max(max_level, stats[k].max_level);
     count += counts[k];
     nlohmann::ordered_json entry;
     entry["file"] = name_of(indices[k]);
@@ -219,6 +222,7 @@ void run_chunks(const UnboundedOptions& o) {
   manifest["count"] = count;
   manifest["max_margin_cells"] = max_margin;
   manifest["max_depth"] = max_depth;
+  manifest["max_level"] = max_level;
   manifest["chunks"] = list;
   const std::string path = (fs::path(o.output) / "manifest.json").string();
   std::ofstream file(path);
