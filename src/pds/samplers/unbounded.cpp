@@ -99,6 +99,8 @@ struct Dart {
 template <int D>
 using Sub = std::array<std::uint64_t, D>;
 
+constexpr std::uint8_t kNotExpanded = 0, kExpanding = 1, kExpanded = 2;
+
 /// An open sub-cell (level >= 1), or the cell itself (level 0, the root): a
 /// node of the cell's quadtree (octree), grown lazily where it is needed.
 template <int D>
@@ -107,10 +109,9 @@ struct Node {
   std::uint32_t first_dart = 0, darts = 0;      // its darts: CellState::darts[first_dart, + darts)
   std::uint32_t first_child = 0, children = 0;  // its open children: CellState::nodes[first_child, + children)
   std::uint8_t level = 0;
-  std::uint8_t expanded = 0;  // kNotExpanded, kExpanding or kExpanded
+  std::uint8_t expanded = kNotExpanded;  // kNotExpanded, kExpanding or kExpanded
 };
 
-constexpr std::uint8_t kNotExpanded = 0, kExpanding = 1, kExpanded = 2;
 constexpr std::uint32_t kRoot = UINT32_MAX;
 constexpr std::int8_t kClosed = INT8_MAX;  // CellState::done: no sub-cell open, no dart will ever come
 
