@@ -57,6 +57,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <deque>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -428,7 +429,10 @@ class Settler {
     const Box pb = box(c, parent, k - 1);
     // The samples kept before `start` within r of the parent: the darts of
     // the nodes of levels below k near it, decided.
-    std::vector<Point<D>> kept;
+    // Buffers reused by every call at this recursion depth (depth_ counts this call).
+    Scratch& scratch = scratch_at(depth_);
+    std::vector<Point<D>>& kept = scratch.kept;
+    kept.clear();
     for_each_neighbour(c, pb, [&](const Cell<D>& m, CellState<D>& ms) {
       if (decided_until(ms) >= start) {  // the usual case inside a region: a short list
         for (const std::uint32_t j : ms.kept)
@@ -443,9 +447,11 @@ class Settler {
         }
       }, &pb);
     });
-    std::vector<Sub<D>> open;
-    std::vector<Dart<D>> darts;
-    std::vector<std::uint32_t> counts;
+    std::array<Sub<D>, (1 << D)> open;
+    std::array<std::uint32_t, (1 << D)> counts;
+    std::size_t opened = 0;
+    std::vector<Dart<D>>& darts = scratch.darts;
+    darts.clear();
     const std::uint64_t level_key = mix64(cell_key(c) ^ mix64(0x6c6576656cULL + static_cast<std::uint64_t>(k)));
     for (int child = 0; child < (1 << D); ++child) {
       Sub<D> sub;
@@ -468,22 +474,22 @@ class Settler {
         }
       }
       if (covered) continue;
-      open.push_back(sub);
+      open[opened] = sub;
       std::uint64_t h = level_key;
       for (int a = 0; a < D; ++a) h = mix64(h ^ mix64(sub[a] + 0x8f1bbcdcbfa53e0bULL * static_cast<std::uint64_t>(a + 1)));
       const std::size_t before = darts.size();
       stream(h, c, k, sub, start, level_end_[static_cast<std::size_t>(k)], darts);
-      counts.push_back(static_cast<std::uint32_t>(darts.size() - before));
+      counts[opened++] = static_cast<std::uint32_t>(darts.size() - before);
     }
-    if (s.nodes.size() + open.size() > kMaxNodesPerCell)
+    if (s.nodes.size() + opened > kMaxNodesPerCell)
       throw Failure("unbounded: more than " + std::to_string(kMaxNodesPerCell) +
                     " sub-cells of one cell open (numerical breakdown; report this with the seed and radius)");
     Node<D>& node = s.node(n);
     node.first_child = static_cast<std::uint32_t>(s.nodes.size());
-    node.children = static_cast<std::uint32_t>(open.size());
+    node.children = static_cast<std::uint32_t>(opened);
     node.expanded = kExpanded;
     std::uint32_t first = static_cast<std::uint32_t>(s.darts.size());
-    for (std::size_t i = 0; i < open.size(); ++i) {
+    for (std::size_t i = 0; i < opened; ++i) {
       Node<D> child;
       child.sub = open[i];
       child.level = static_cast<std::uint8_t>(k);
@@ -511,13 +517,8 @@ class Settler {
     ++darts_settled_;
     const Dart<D> d = s.darts[j];
     const int level = d.t < end_time_ ? 0 : level_of(d.t);
-    struct Candidate {
-      Dart<D> dart;
-      Cell<D> cell;
-      CellState<D>* state;
-      std::uint32_t j;
-    };
-    std::vector<Candidate> candidates;
+    std::vector<Candidate>& candidates = scratch_at(depth_).candidates;
+    candidates.clear();
     bool rejected = false;
     Box point;
     point.mid = d.p;
@@ -578,6 +579,24 @@ class Settler {
 
   double origin(int a) const { return torus_ ? torus_->lo[a] : 0.0; }
 
+  struct Candidate {
+    Dart<D> dart;
+    Cell<D> cell;
+    CellState<D>* state;
+    std::uint32_t j;
+  };
+  /// Buffers of one recursion depth, kept for the call's whole run: a call
+  /// only uses its own depth's, and finishes with them before returning.
+  struct Scratch {
+    std::vector<Point<D>> kept;
+    std::vector<Dart<D>> darts;
+    std::vector<Candidate> candidates;
+  };
+  Scratch& scratch_at(int depth) {
+    if (scratch_.size() <= static_cast<std::size_t>(depth)) scratch_.resize(static_cast<std::size_t>(depth) + 1);
+    return scratch_[static_cast<std::size_t>(depth)];
+  }
+
   double r2_, end_time_;
   std::array<double, D> edges_;
   const Domain<D>* torus_;
@@ -592,6 +611,7 @@ class Settler {
   std::size_t darts_settled_ = 0;
   int depth_ = 0, max_depth_ = 0, max_level_ = 0;
   std::array<double, kMaxUnboundedLevel + 1> level_end_{}, scale_{};
+  std::deque<Scratch> scratch_;  // a deque: growing it moves no buffer in use
 };
 
 }  // namespace
