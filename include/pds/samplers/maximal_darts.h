@@ -30,12 +30,13 @@ struct MaximalDartsParams {
 /// parallel (docs/maximal-darts.md).
 /// Guarantees: all pairs at least `radius` apart; every point in [lo, hi);
 /// maximal (every point of the domain within `radius` of a sample, up to a
-/// slack of 1e-12 radius plus a few units of rounding); same seed, same
+/// slack of 1e-12 radius plus rounding, or 5e-10 radius where sub-cells reach
+/// the deepest level, 2^-31 cells); same seed, same
 /// points, for every thread count and platform.
 /// Invalid: a radius that is not positive and finite, whose densest packing
 /// exceeds max_points, or so small next to the coordinates that rounding is
-/// a millionth of it. Failure: sub-cells still open after 60 levels (a
-/// numerical breakdown; not seen in testing).
+/// a millionth of it. Failure: sub-cells of edge 2^-31 cells still open
+/// after 1,000 rounds of darts (a numerical breakdown; not seen in testing).
 template <int D>
 PointSet<D> maximal_darts(const MaximalDartsParams& params, const Domain<D>& domain, std::uint64_t seed);
 

@@ -75,9 +75,15 @@ namespace {
 // Window lengths in expected darts per unit (a cell at level 0, a sub-cell
 // after). Short first windows keep the first, dense windows' candidate
 // conflicts few; these only change the speed, never the distribution.
-constexpr double kFirstLevelWindows[] = {0.25, 0.25, 0.5, 0.5, 0.5};
+constexpr double kFirstLevelWindows[] = {0.125, 0.125, 0.25, 0.5, 0.5, 0.5};
 constexpr double kLevelWindows[] = {0.5};
-constexpr int kMaxLevel = 60;      // sub-cells of edge 2^-60 cells: far below the slack
+// Sub-cells are split down to edge 2^-31 cells (the codes' 32 bits); those
+// still open then are dropped when their centre lies within r plus half a
+// diagonal of a sample (every point within r + 5e-10 r of it), the others
+// (whose inscribed ball is uncovered) take darts without further splitting,
+// for at most kMaxFinalRounds levels' worth of windows.
+constexpr int kMaxLevel = 31;
+constexpr int kMaxFinalRounds = 1000;
 constexpr int kMaxDepth = 20000;   // a chain of ever earlier candidates in one window
 constexpr int kPoissonTerms = 24;  // P(K >= 24) below 1e-30 for the means above
 constexpr int kChunkBits = 8;      // at most 256 chunks
@@ -123,10 +129,10 @@ class MaximalDartsSampler {
 
   /// An open sub-cell: its cell and its position there, `level` bits an axis.
   struct Unit {
-    std::uint32_t cell;
-    bool dead;  // a sample covers it whole
-    std::array<std::uint64_t, D> code;
+    std::uint32_t cell;  // kDead once a sample covers it whole
+    std::array<std::uint32_t, D> code;
   };
+  static constexpr std::uint32_t kDead = 0xffffffffu;
 
   struct Chunk {
     std::uint32_t begin = 0, end = 0;  // cells [begin, end)
@@ -190,10 +196,11 @@ class MaximalDartsSampler {
   PointSet<D> run(std::uint64_t seed) {
     if (fallback_) return ebeida<D>({r_, std::numeric_limits<std::uint64_t>::max()}, domain_, seed);
     for (level_ = 0;; ++level_) {
-      if (level_ > kMaxLevel)
-        throw Failure("maximal-darts: " + std::to_string(open_units()) + " sub-cells still open after " +
-                      std::to_string(kMaxLevel) + " levels of refinement (numerical breakdown)");
-      level_scale_ = std::ldexp(1.0, -level_);
+      if (level_ > kMaxLevel + kMaxFinalRounds)
+        throw Failure("maximal-darts: " + std::to_string(open_units()) + " sub-cells of edge 2^-" +
+                      std::to_string(kMaxLevel) + " cells still open after " + std::to_string(kMaxFinalRounds) +
+                      " rounds of darts (numerical breakdown)");
+      level_scale_ = std::ldexp(1.0, -std::min(level_, kMaxLevel));
       if (level_ > 0) {
         refine();
         if (open_units() == 0) break;
@@ -269,12 +276,13 @@ class MaximalDartsSampler {
   /// Draws the darts of one unit (a cell at level 0: code all zero) for this
   /// window and keeps the candidates; returns false when a sample covers the
   /// unit whole.
-  bool throw_darts(Chunk& chunk, std::size_t cell, const Coords& c, const std::array<std::uint64_t, D>& code,
+  bool throw_darts(Chunk& chunk, std::size_t cell, const Coords* coords, const std::array<std::uint32_t, D>& code,
                    std::uint64_t stream, const PoissonTable& poisson) {
     std::uint64_t counter = stream;
     const auto next = [&counter] { return mix64(counter += kGolden); };
     const int darts = poisson.draw(next());
     if (darts == 0) return true;
+    const Coords c = coords ? *coords : hood_.coords(cell);
     const bool border = !interior(c);
     Point<D> lo, hi;
     std::array<double, D> edge;
@@ -313,10 +321,10 @@ class MaximalDartsSampler {
       chunk.candidates.clear();
       chunk.closed.clear();
       if (level_ == 0) {
-        const std::array<std::uint64_t, D> zero{};
+        const std::array<std::uint32_t, D> zero{};
         Coords c = hood_.coords(chunk.begin);
         for (std::size_t cell = chunk.begin; cell < chunk.end; ++cell) {
-          if (state_[cell] == kOpen && !throw_darts(chunk, cell, c, zero, mix64(key ^ (cell * kGolden)), poisson))
+          if (state_[cell] == kOpen && !throw_darts(chunk, cell, &c, zero, mix64(key ^ (cell * kGolden)), poisson))
             chunk.closed.push_back(static_cast<std::uint32_t>(cell));
           for (int a = 0; a < D && ++c[a] == n_[a]; ++a) c[a] = 0;
         }
@@ -324,7 +332,7 @@ class MaximalDartsSampler {
         for (Unit& unit : chunk.units) {
           std::uint64_t stream = mix64(key ^ (unit.cell * kGolden));
           for (int a = 0; a < D; ++a) stream = mix64(stream + unit.code[a]);
-          if (!throw_darts(chunk, unit.cell, hood_.coords(unit.cell), unit.code, stream, poisson)) unit.dead = true;
+          if (!throw_darts(chunk, unit.cell, nullptr, unit.code, stream, poisson)) unit.cell = kDead;
         }
       }
       if (chunk.candidates.size() > kMaxChunkCandidates)
@@ -363,7 +371,13 @@ class MaximalDartsSampler {
           state = kOpen;
         }
       }
-      if (level_ > 0) std::erase_if(chunk.units, [&](const Unit& unit) { return unit.dead || state_[unit.cell] >= 0; });
+      if (level_ > 0)
+        std::erase_if(chunk.units, [&](const Unit& unit) { return unit.cell == kDead || state_[unit.cell] >= 0; });
+      // The first windows' candidates are the most; later ones need far less room.
+      if (chunk.candidates.capacity() > 4 * chunk.candidates.size() + 1024) {
+        chunk.candidates.clear();
+        chunk.candidates.shrink_to_fit();
+      }
     });
   }
 
@@ -409,6 +423,9 @@ class MaximalDartsSampler {
   /// keeps those that no single disk covers; a cell left with none is closed.
   void refine() {
     const int parent_level = level_ - 1;
+    // Past the deepest level the units are kept as they are, less those whose
+    // centre a disk covers.
+    const bool final = level_ > kMaxLevel;
     // Only samples that can cover a whole child: along each axis the child's
     // far side lies at least a child edge (half of one in the same column)
     // beyond the gap between the cells. At level 1 that leaves the 3^D block.
@@ -433,7 +450,7 @@ class MaximalDartsSampler {
           edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * level_scale_;
         }
         near.clear();
-        hood_.for_each_image(cover, c, cell, [&](std::size_t n, const Coords& periods) {
+        hood_.for_each_image(final ? near_ : cover, c, cell, [&](std::size_t n, const Coords& periods) {
           if (state_[n] < 0) return;
           const Point<D>& s = samples_[static_cast<std::size_t>(state_[n])];
           std::array<double, D> d;
@@ -443,11 +460,29 @@ class MaximalDartsSampler {
         const std::size_t before = children.size();
         for (const Unit& parent : parents) {
           const auto& code = parent.code;
+          if (final) {
+            // Within r + half a diagonal of a sample, every point of the unit
+            // lies within r + a diagonal (5e-10 r); otherwise the unit's
+            // inscribed ball is uncovered and darts find it.
+            double diagonal2 = 0.0;
+            for (int a = 0; a < D; ++a) diagonal2 += edge[a] * edge[a];
+            const double reach = r_ + 0.5 * std::sqrt(diagonal2);
+            const bool covered = std::any_of(near.begin(), near.end(), [&](const std::array<double, D>& d) {
+              double d2 = 0.0;
+              for (int a = 0; a < D; ++a) {
+                const double gap = d[a] - (static_cast<double>(code[a]) + 0.5) * edge[a];
+                d2 += gap * gap;
+              }
+              return d2 < reach * reach;
+            });
+            if (!covered) children.push_back(parent);
+            continue;
+          }
           // The children's faces along each axis, relative to the cell's corner.
           std::array<std::array<double, 3>, D> face;
           for (int a = 0; a < D; ++a)
             for (int f = 0; f < 3; ++f)
-              face[a][f] = static_cast<double>(code[a] * 2 + static_cast<std::uint64_t>(f)) * edge[a];
+              face[a][f] = static_cast<double>(std::uint64_t{code[a]} * 2 + static_cast<std::uint64_t>(f)) * edge[a];
           unsigned covered = 0;
           for (const auto& d : near) {
             std::array<std::array<double, 2>, D> far;
@@ -466,8 +501,8 @@ class MaximalDartsSampler {
           }
           for (int child = 0; child < kChildren; ++child) {
             if (covered & (1u << child)) continue;
-            Unit unit{cell, false, {}};
-            for (int a = 0; a < D; ++a) unit.code[a] = code[a] * 2 + static_cast<std::uint64_t>((child >> a) & 1);
+            Unit unit{cell, {}};
+            for (int a = 0; a < D; ++a) unit.code[a] = code[a] * 2 + static_cast<std::uint32_t>((child >> a) & 1);
             children.push_back(unit);
           }
         }
@@ -476,7 +511,7 @@ class MaximalDartsSampler {
       if (parent_level == 0) {
         for (std::size_t cell = chunk.begin; cell < chunk.end; ++cell)
           if (state_[cell] == kOpen) {
-            const Unit whole{static_cast<std::uint32_t>(cell), false, {}};
+            const Unit whole{static_cast<std::uint32_t>(cell), {}};
             split(whole.cell, std::span<const Unit>(&whole, 1));
           }
       } else {
@@ -489,6 +524,7 @@ class MaximalDartsSampler {
         }
       }
       chunk.units = std::move(children);
+      chunk.units.shrink_to_fit();  // a vector grown by doubling would hold up to twice the open units
     });
     std::size_t open = 0;
     for (Chunk& chunk : chunks_) {
