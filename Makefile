@@ -43,8 +43,9 @@ bench: build
 # The clang lane: the whole project built with clang under ASan and UBSan
 # (any report fails; line tables only: the reports' file:line, a quarter less
 # compile time than -g), every test run in it, then each libFuzzer target for
-# FUZZ_SECONDS from the seeds in fuzz/corpus (the corpus it grows stays in the
-# build folder; a crash leaves its input there as crash-* and fails the run).
+# FUZZ_SECONDS from the seeds in fuzz/corpus, JOBS targets side by side
+# (scripts/fuzz.sh: the corpus it grows stays in the build folder; a crash
+# leaves its input there as crash-* and fails the run).
 # Leaks inside Cairo's font stack are suppressed by tests/lsan.supp, nothing else.
 # The Python module is left out: an ASan-built module cannot load into Debian's
 # uninstrumented python3 (its tests run in the main build); so is pds-mpi
@@ -77,15 +78,7 @@ sanitize: san-build
 	  -E "$(SAN_EXCLUDE)"
 
 fuzz: san-build
-	@set -o pipefail; for t in $(FUZZ_TARGETS); do \
-	  corpus=fuzz/corpus/$$(case $$t in read_csv) echo csv;; read_npy) echo npy;; read_png) echo png;; \
-	    read_geojson) echo geojson;; read_manifest) echo manifest;; *) echo request;; esac); \
-	  mkdir -p $(SAN_BUILD)/corpus/$$t; \
-	  echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
-	  (cd $(SAN_BUILD) && $(SAN_ENV) ./fuzz/$${t}_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
-	    -print_final_stats=1 corpus/$$t ../$$corpus > fuzz-$$t.log 2>&1) \
-	    && tail -6 $(SAN_BUILD)/fuzz-$$t.log || { tail -60 $(SAN_BUILD)/fuzz-$$t.log; exit 1; }; \
-	done
+	@$(SAN_ENV) bash scripts/fuzz.sh $(SAN_BUILD) $(FUZZ_SECONDS) $(JOBS) $(FUZZ_TARGETS)
 
 clean:
 	rm -rf $(BUILD) $(SAN_BUILD) out
