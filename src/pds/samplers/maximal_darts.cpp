@@ -102,8 +102,11 @@ struct PoissonTable {
       sum += p;
       cdf[k] = sum;
     }
+    zero_below = static_cast<std::uint64_t>(std::ceil(std::ldexp(cdf[0], 53)));
   }
+  std::uint64_t zero_below = 0;  // (bits >> 11) below this: none (the same test as u < cdf[0])
   int draw(std::uint64_t bits) const {
+    if ((bits >> 11) < zero_below) return 0;
     const double u = uniform_from_bits(bits);
     int k = 0;
     while (k < kPoissonTerms - 1 && u >= cdf[k]) ++k;
@@ -485,12 +488,20 @@ class MaximalDartsSampler {
               face[a][f] = static_cast<double>(std::uint64_t{code[a]} * 2 + static_cast<std::uint64_t>(f)) * edge[a];
           unsigned covered = 0;
           for (const auto& d : near) {
+            // Every child has the parent's centre (the middle faces) as a
+            // corner: a disk that misses it covers no child.
+            std::array<double, D> q1;
+            double centre2 = 0.0;
+            for (int a = 0; a < D; ++a) {
+              q1[a] = (d[a] - face[a][1]) * (d[a] - face[a][1]);
+              centre2 += q1[a];
+            }
+            if (!(centre2 < cover2_)) continue;
             std::array<std::array<double, 2>, D> far;
             for (int a = 0; a < D; ++a) {
               const double q0 = (d[a] - face[a][0]) * (d[a] - face[a][0]);
-              const double q1 = (d[a] - face[a][1]) * (d[a] - face[a][1]);
               const double q2 = (d[a] - face[a][2]) * (d[a] - face[a][2]);
-              far[a] = {std::max(q0, q1), std::max(q1, q2)};
+              far[a] = {std::max(q0, q1[a]), std::max(q1[a], q2)};
             }
             for (int child = 0; child < kChildren; ++child) {
               double far2 = 0.0;
