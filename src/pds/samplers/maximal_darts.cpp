@@ -84,9 +84,10 @@ constexpr double kLevelWindows[] = {0.5};
 // for at most kMaxFinalRounds levels' worth of windows.
 constexpr int kMaxLevel = 31;
 constexpr int kMaxFinalRounds = 1000;
-constexpr int kMaxDepth = 20000;   // a chain of ever earlier candidates in one window
-constexpr int kPoissonTerms = 24;  // P(K >= 24) below 1e-30 for the means above
-constexpr int kChunkBits = 8;      // at most 256 chunks
+constexpr int kMaxDepth = 20000;             // a chain of ever earlier candidates in one window
+constexpr int kPoissonTerms = 24;            // P(K >= 24) below 1e-30 for the means above
+constexpr std::size_t kSerialUnits = 16384;  // fewer open sub-cells: one thread
+constexpr int kChunkBits = 8;                // at most 256 chunks
 constexpr std::size_t kMaxChunkCandidates = (std::size_t{1} << 22) - 1;
 constexpr std::uint64_t kGolden = 0x9e3779b97f4a7c15ULL;
 
@@ -224,7 +225,10 @@ class MaximalDartsSampler {
 
   template <class Body>
   void for_chunks(Body&& body) {
-    parallel_for(0, chunks_.size(), 1, threads_, [&](std::size_t b, std::size_t e) {
+    // The deep levels hold a few thousand sub-cells: less work than waking
+    // the pool for each sweep (the output does not depend on it).
+    const int threads = level_ > 0 && open_units() < kSerialUnits ? 1 : threads_;
+    parallel_for(0, chunks_.size(), 1, threads, [&](std::size_t b, std::size_t e) {
       for (std::size_t k = b; k < e; ++k) body(k, chunks_[k]);
     });
   }
