@@ -33,19 +33,21 @@
 // TVCG 2013) resolve conflicts by random priorities in the same way.
 //
 // Why not ebeida.cpp: that sampler sweeps cells in memory order and settles
-// each dart by recursively settling its neighbours' earlier darts, with
-// exponential waiting times per cell; its per-dart bookkeeping (a logarithm,
-// a recursion into every neighbour, 128-bit sub-cell codes) costs about 10^4
-// instructions a sample and it runs on one thread. Here a dart costs a few
-// hashes and a scan of the precomputed neighbour offsets, nearest first.
+// each dart by recursively settling its neighbours' earlier darts, on one
+// thread (two threads settling one neighbour would need a lock). Here every
+// sweep is data-parallel without locks. The cost a sample is about the same
+// (cachegrind at 10^5: 7,400 instructions against 8,100, docs/benchmarks.md):
+// both need about 10 darts and 7.5 sub-cell refinements a sample to find the
+// last gaps of the process, whatever each costs.
 //
 // Determinism: the darts of unit u in window w of level l come from hashes of
 // (seed, l, w, u); times are 64-bit integers (a tie, probability 2^-64 a
 // pair, goes to the lower cell). The samples are returned in commit order.
 //
 // Guarantees: minimum distance r (Domain::distance2, the analysis's function
-// at the grid's seams); maximal up to a slack of 1e-12 r plus rounding; the
-// distribution of maximal dart throwing. A torus shorter than 2 reach + 2
+// at the grid's seams); maximal up to a slack of 1e-12 r plus rounding (5e-10
+// r where sub-cells reach the deepest level); the distribution of maximal
+// dart throwing. A torus shorter than 2 reach + 2
 // cells along an axis (a neighbour offset would meet the same cell twice)
 // is handed to ebeida, the same process.
 //
