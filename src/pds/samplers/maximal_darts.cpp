@@ -33,19 +33,21 @@
 // TVCG 2013) resolve conflicts by random priorities in the same way.
 //
 // Why not ebeida.cpp: that sampler sweeps cells in memory order and settles
-// each dart by recursively settling its neighbours' earlier darts, with
-// exponential waiting times per cell; its per-dart bookkeeping (a logarithm,
-// a recursion into every neighbour, 128-bit sub-cell codes) costs about 10^4
-// instructions a sample and it runs on one thread. Here a dart costs a few
-// hashes and a scan of the precomputed neighbour offsets, nearest first.
+// each dart by recursively settling its neighbours' earlier darts, on one
+// thread (two threads settling one neighbour would need a lock). Here every
+// sweep is data-parallel without locks. The cost a sample is about the same
+// (cachegrind at 10^5: 7,400 instructions against 8,100, docs/benchmarks.md):
+// both need about 10 darts and 7.5 sub-cell refinements a sample to find the
+// last gaps of the process, whatever each costs.
 //
 // Determinism: the darts of unit u in window w of level l come from hashes of
 // (seed, l, w, u); times are 64-bit integers (a tie, probability 2^-64 a
 // pair, goes to the lower cell). The samples are returned in commit order.
 //
 // Guarantees: minimum distance r (Domain::distance2, the analysis's function
-// at the grid's seams); maximal up to a slack of 1e-12 r plus rounding; the
-// distribution of maximal dart throwing. A torus shorter than 2 reach + 2
+// at the grid's seams); maximal up to a slack of 1e-12 r plus rounding (5e-10
+// r where sub-cells reach the deepest level); the distribution of maximal
+// dart throwing. A torus shorter than 2 reach + 2
 // cells along an axis (a neighbour offset would meet the same cell twice)
 // is handed to ebeida, the same process.
 //
@@ -84,9 +86,10 @@ constexpr double kLevelWindows[] = {0.5};
 // for at most kMaxFinalRounds levels' worth of windows.
 constexpr int kMaxLevel = 31;
 constexpr int kMaxFinalRounds = 1000;
-constexpr int kMaxDepth = 20000;   // a chain of ever earlier candidates in one window
-constexpr int kPoissonTerms = 24;  // P(K >= 24) below 1e-30 for the means above
-constexpr int kChunkBits = 8;      // at most 256 chunks
+constexpr int kMaxDepth = 20000;             // a chain of ever earlier candidates in one window
+constexpr int kPoissonTerms = 24;            // P(K >= 24) below 1e-30 for the means above
+constexpr std::size_t kSerialUnits = 16384;  // fewer open sub-cells: one thread
+constexpr int kChunkBits = 8;                // at most 256 chunks
 constexpr std::size_t kMaxChunkCandidates = (std::size_t{1} << 22) - 1;
 constexpr std::uint64_t kGolden = 0x9e3779b97f4a7c15ULL;
 
@@ -102,8 +105,11 @@ struct PoissonTable {
       sum += p;
       cdf[k] = sum;
     }
+    zero_below = static_cast<std::uint64_t>(std::ceil(std::ldexp(cdf[0], 53)));
   }
+  std::uint64_t zero_below = 0;  // (bits >> 11) below this: none (the same test as u < cdf[0])
   int draw(std::uint64_t bits) const {
+    if ((bits >> 11) < zero_below) return 0;
     const double u = uniform_from_bits(bits);
     int k = 0;
     while (k < kPoissonTerms - 1 && u >= cdf[k]) ++k;
@@ -221,7 +227,10 @@ class MaximalDartsSampler {
 
   template <class Body>
   void for_chunks(Body&& body) {
-    parallel_for(0, chunks_.size(), 1, threads_, [&](std::size_t b, std::size_t e) {
+    // The deep levels hold a few thousand sub-cells: less work than waking
+    // the pool for each sweep (the output does not depend on it).
+    const int threads = level_ > 0 && open_units() < kSerialUnits ? 1 : threads_;
+    parallel_for(0, chunks_.size(), 1, threads, [&](std::size_t b, std::size_t e) {
       for (std::size_t k = b; k < e; ++k) body(k, chunks_[k]);
     });
   }
@@ -485,12 +494,20 @@ class MaximalDartsSampler {
               face[a][f] = static_cast<double>(std::uint64_t{code[a]} * 2 + static_cast<std::uint64_t>(f)) * edge[a];
           unsigned covered = 0;
           for (const auto& d : near) {
+            // Every child has the parent's centre (the middle faces) as a
+            // corner: a disk that misses it covers no child.
+            std::array<double, D> q1;
+            double centre2 = 0.0;
+            for (int a = 0; a < D; ++a) {
+              q1[a] = (d[a] - face[a][1]) * (d[a] - face[a][1]);
+              centre2 += q1[a];
+            }
+            if (!(centre2 < cover2_)) continue;
             std::array<std::array<double, 2>, D> far;
             for (int a = 0; a < D; ++a) {
               const double q0 = (d[a] - face[a][0]) * (d[a] - face[a][0]);
-              const double q1 = (d[a] - face[a][1]) * (d[a] - face[a][1]);
               const double q2 = (d[a] - face[a][2]) * (d[a] - face[a][2]);
-              far[a] = {std::max(q0, q1), std::max(q1, q2)};
+              far[a] = {std::max(q0, q1[a]), std::max(q1[a], q2)};
             }
             for (int child = 0; child < kChildren; ++child) {
               double far2 = 0.0;

