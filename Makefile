@@ -50,7 +50,7 @@ bench: build
 SAN_BUILD ?= build-san
 FUZZ_SECONDS ?= 60
 SAN_SWEEP_SHARDS ?= 2
-FUZZ_TARGETS = read_csv read_npy read_png read_geojson generate
+FUZZ_TARGETS = read_csv read_npy read_png read_geojson read_mesh generate
 SAN_FLAGS = -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link -fno-omit-frame-pointer
 SAN_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0
@@ -73,7 +73,7 @@ sanitize: san-build
 fuzz: san-build
 	@set -o pipefail; for t in $(FUZZ_TARGETS); do \
 	  corpus=fuzz/corpus/$$(case $$t in read_csv) echo csv;; read_npy) echo npy;; read_png) echo png;; \
-	    read_geojson) echo geojson;; *) echo request;; esac); \
+	    read_geojson) echo geojson;; read_mesh) echo mesh;; *) echo request;; esac); \
 	  mkdir -p $(SAN_BUILD)/corpus/$$t; \
 	  echo "fuzz: $$t for $(FUZZ_SECONDS) s"; \
 	  (cd $(SAN_BUILD) && $(SAN_ENV) ./fuzz/$${t}_fuzz -max_total_time=$(FUZZ_SECONDS) -timeout=10 -rss_limit_mb=2048 \
