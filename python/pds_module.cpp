@@ -31,6 +31,7 @@
 #include "pds/analysis/spectrum.h"
 #include "pds/error.h"
 #ifdef PDS_WITH_JSON
+#include "pds/io/chunks.h"
 #include "pds/io/report_json.h"
 #endif
 #include "pds/point.h"
@@ -321,6 +322,20 @@ py::tuple min_distance(const InputArray& array, std::vector<double> lo, std::vec
 }
 
 #ifdef PDS_WITH_JSON
+/// A chunked set (pds chunks: a manifest.json and its NPY chunks) as one
+/// (N, D) array in canonical order, and the manifest's region and torus.
+py::tuple read_chunks(const std::string& path) {
+  pds::ChunkManifest m;
+  pds::PointCloud cloud;
+  {
+    py::gil_scoped_release release;
+    cloud = pds::read_chunks(path, &m);
+  }
+  const auto n = static_cast<py::ssize_t>(cloud.size());
+  return py::make_tuple(adopt(std::move(cloud.coords), {n, static_cast<py::ssize_t>(m.dim)}), m.lo, m.hi,
+                        !m.torus_lo.empty() && m.torus_lo == m.lo && m.torus_hi == m.hi);
+}
+
 /// The analysis report as the JSON `pds analyze` prints (the Python side
 /// parses it), so the keys, their order and their values are the CLI's.
 std::string analyze_json(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
@@ -395,6 +410,7 @@ PYBIND11_MODULE(_pds, m) {
   m.def("discrepancy", &discrepancy, py::arg("points"), py::arg("lo"), py::arg("hi"), py::arg("kind"));
   m.def("min_distance", &min_distance, py::arg("points"), py::arg("lo"), py::arg("hi"), py::arg("torus"));
 #ifdef PDS_WITH_JSON
+  m.def("read_chunks", &read_chunks, py::arg("path"));
   m.def("analyze_json", &analyze_json, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
         py::arg("radius"), py::arg("max_frequency"), py::arg("spectrum"), py::arg("pcf_r_max"),
         py::arg("pcf_bandwidth"));

@@ -17,6 +17,7 @@
 #include "pds/analysis/report.h"
 #include "pds/detail/format.h"
 #include "pds/error.h"
+#include "pds/io/chunks.h"
 #include "pds/io/plot.h"
 #include "pds/io/point_file.h"
 #include "pds/io/report_json.h"
@@ -150,8 +151,8 @@ void add_analyze(CLI::App& app) {
       "Measure point sets (files, '-' for CSV on stdin, or --method to generate them); prints JSON. Minimum and "
       "nearest-neighbour distances and the L2-star, centered, wrap-around and mixture discrepancies in any "
       "dimension; relative radius and maximality (--radius) in 1 to 8; spectra and pair correlation in 2D and 3D");
-  cmd->add_option("file", opt->files,
-                  "Point files (.csv or .npy, any number of columns) or '-'; several files are several realisations");
+  cmd->add_option("file", opt->files, "Point files (.csv or .npy, any number of columns), '-', or a chunked set's manifest.json (pds chunks); "
+                  "several files are several realisations");
   add_domain_options(*cmd, opt->domain, false);
   auto* radius = cmd->add_option("--radius,-r", opt->radius,
                                  "Minimum distance to check (and, with --method, to generate with); also reports "
@@ -215,7 +216,20 @@ void add_analyze(CLI::App& app) {
       for (const std::string& f : opt->files) stdin_uses += f == "-";
       if (stdin_uses > 1) throw InvalidArgument("'-' (standard input) can be given once");
       for (const std::string& f : opt->files) {
-        clouds.push_back(read_points(f));
+        if (f.size() >= 5 && f.compare(f.size() - 5, 5, ".json") == 0) {
+          // A chunked set (pds chunks): its chunks as one set, over the
+          // region they cover (a torus when they cover the whole torus)
+          // unless --bounds says otherwise.
+          ChunkManifest m;
+          clouds.push_back(read_chunks(f, &m));
+          if (opt->domain.bounds.empty()) {
+            opt->domain.bounds = m.lo;
+            opt->domain.bounds.insert(opt->domain.bounds.end(), m.hi.begin(), m.hi.end());
+            if (!m.torus_lo.empty() && m.torus_lo == m.lo && m.torus_hi == m.hi) opt->domain.torus = true;
+          }
+        } else {
+          clouds.push_back(read_points(f));
+        }
         if (clouds.back().dim != clouds.front().dim)
           throw InvalidArgument("'" + f + "' has dimension " + std::to_string(clouds.back().dim) + ", '" +
                                 opt->files.front() + "' has " + std::to_string(clouds.front().dim));

@@ -25,6 +25,7 @@ Conventions, the same as the command line's:
 from __future__ import annotations
 
 import json as _json
+import os as _os
 
 import numpy as _np
 
@@ -40,6 +41,7 @@ __all__ = [
     "pair_correlation",
     "discrepancy",
     "min_distance",
+    "read_chunks",
     "render",
     "MAX_POINTS",
     "qmc",
@@ -357,6 +359,23 @@ def min_distance(points, *, bounds=None, torus: bool = False):
     a = _np.asarray(_sets(points)[0], dtype=float)
     lo, hi = _bounds(bounds, _dim([a]))
     return _pds.min_distance(a, lo, hi, bool(torus))
+
+
+def read_chunks(path, *, with_region: bool = False):
+    """A chunked set written by ``pds chunks`` or ``pds-mpi chunks`` (the
+    path of its ``manifest.json``) as one (N, D) float64 array, sorted
+    lexicographically (the canonical order: the bytes of the region sampled
+    whole). The manifest and every chunk are checked (format, counts, each
+    point inside its chunk); anything wrong raises ValueError naming the file.
+    With ``with_region=True`` returns ``(points, bounds, torus)``: the region
+    the chunks cover as ``bounds`` (lo then hi) and whether it is the whole
+    torus of a periodic field, ready for ``analyze(points, bounds=bounds,
+    torus=torus)``.
+    """
+    points, lo, hi, torus = _pds.read_chunks(_os.fspath(path))
+    if with_region:
+        return points, list(lo) + list(hi), bool(torus)
+    return points
 
 
 def render(

@@ -107,7 +107,12 @@ PointCloud read_csv(std::istream& in, const std::string& name) {
 std::vector<Column> coordinate_columns(int dim) {
   static const char* names[] = {"x", "y", "z", "w"};
   std::vector<Column> columns;
-  for (int k = 0; k < dim; ++k) columns.push_back({k < 4 ? names[k] : "x" + std::to_string(k)});
+  for (int k = 0; k < dim; ++k) {
+    // Appended, not "x" + to_string: g++ 12 warns falsely (-Wrestrict) on the operator's inlined copy.
+    std::string name = k < 4 ? names[k] : "x";
+    if (k >= 4) name += std::to_string(k);
+    columns.push_back({name});
+  }
   return columns;
 }
 

@@ -33,6 +33,7 @@ std::span<const Method> methods() {
       jones_method(),
 #endif
       ebeida_method(),
+      maximal_darts_method(),
 #ifdef PDS_WITH_CGAL
       fpo_method(),
 #endif

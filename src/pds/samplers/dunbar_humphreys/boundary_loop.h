@@ -10,7 +10,9 @@
 // inside the domain): the paper's scalloped region restricted to the circle,
 // a set of angular intervals, which is what we store. Front samples are taken
 // in insertion order (breadth first, which keeps memory access local; the
-// guarantees do not depend on the order). A front sample's available arcs
+// guarantees do not depend on the order), from one seed in a box and four on
+// a torus (see the seeds below: one seed's front meets itself along two
+// axis-parallel lines of the torus). A front sample's available arcs
 // are computed from the samples within 2r (a sample at distance d blocks the
 // directions within acos(d / 2r) of its own); then points are drawn uniformly
 // in angle on the remaining arcs, each new sample blocking +-60 degrees
@@ -164,6 +166,10 @@ struct ScalarNeighbours {
   }
 };
 
+/// Seeds of the front on a torus, and the tries to place them (below).
+inline constexpr std::size_t kTorusSeeds = 4;
+inline constexpr int kTorusSeedAttempts = 64;
+
 /// Boundary sampling with a given neighbourhood kernel (inlined into each
 /// kernel's entry point, so that the AVX-512 one is compiled for its target).
 template <class Kernel>
@@ -190,6 +196,24 @@ template <class Kernel>
   points.reserve(static_cast<std::size_t>(0.9 * domain.volume() / r2) + 16);
   Rng rng(seed);
   append_sample(points, grid, uniform_point(rng, domain));
+  if (domain.periodic) {
+    // On a torus one seed's front meets itself halfway to the seed's periodic
+    // images, on the lines x = x0 + Lx/2 and y = y0 + Ly/2: a seam of packing
+    // defects parallel to the axes, a cross along the axes in the averaged
+    // periodogram (twice the power of the other low frequencies). The fronts
+    // of a few seeds at random places meet on the edges of their Voronoi
+    // cells instead, which point every way. More seeds would add seams (low-
+    // frequency power); a box needs none (one front never meets itself
+    // there). Seeds are kept 4 rc apart, so that each one's circle is free
+    // when it is processed (its first child is at exactly rc); a torus too
+    // small for that keeps fewer. Measured in docs/dunbar-humphreys.md.
+    for (int attempt = 0; attempt < kTorusSeedAttempts && points.size() < kTorusSeeds; ++attempt) {
+      const Point<2> q = uniform_point(rng, domain);
+      bool apart = true;
+      for (const Point<2>& s : points) apart &= domain.distance2(q, s) >= 16.0 * rc * rc;
+      if (apart) append_sample(points, grid, q);
+    }
+  }
 
   const double reach2 = 4.0 * rc * rc, inv_reach = 1.0 / (2.0 * rc);
   const double sin60 = std::sqrt(3.0) / 2.0;
