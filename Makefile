@@ -54,7 +54,7 @@ bench: build
 SAN_BUILD ?= build-san
 FUZZ_SECONDS ?= 60
 SAN_SWEEP_SHARDS ?= 2
-FUZZ_TARGETS = read_csv read_npy read_png read_geojson read_manifest generate
+FUZZ_TARGETS = read_csv read_npy read_png read_geojson read_manifest read_mesh generate
 SAN_FLAGS = -fsanitize=address,undefined -fno-sanitize-recover=all -fsanitize=fuzzer-no-link -fno-omit-frame-pointer
 SAN_ENV = ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0

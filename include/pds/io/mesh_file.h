@@ -1,5 +1,5 @@
 #pragma once
-// Triangle meshes from OBJ, PLY (ASCII or binary) and OFF files, read with
+// Triangle meshes from OBJ, PLY (ASCII or binary) and ASCII OFF files, read with
 // CGAL's polygon-soup readers (CGAL::IO::read_OBJ/read_PLY/read_OFF). In the
 // pds::mesh component (CGAL, header-only); the sampler is in the core
 // (pds/samplers/surface.h).
@@ -10,7 +10,9 @@
 // convex planar faces). Errors (InvalidArgument) name the file: an unknown
 // extension, a file CGAL cannot parse, a face of fewer than three vertices,
 // a vertex index out of range, a non-finite coordinate, no triangles, zero
-// area.
+// area; and, before CGAL parses, what its parsers would trust (OFF counts,
+// face sizes and indices; the PLY header's shape and counts; binary OFF):
+// docs/surface.md, "Reading meshes".
 
 #include <iosfwd>
 #include <string>

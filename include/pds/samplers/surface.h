@@ -54,7 +54,8 @@ struct SurfaceSamples {
 double surface_area(const TriangleMesh& mesh);
 
 /// Throws InvalidArgument unless the mesh has a triangle, every index names a
-/// vertex, every coordinate is finite, the area is positive and at most 2^31
+/// vertex, every coordinate is finite and at most 1e149 in magnitude (the
+/// bounding box stays a valid domain), the area is positive and finite, at most 2^31
 /// vertices and triangles.
 void validate_mesh(const TriangleMesh& mesh);
 

@@ -13,11 +13,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <istream>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -46,41 +48,163 @@ const char* format_name(MeshFormat format) {
   return "?";
 }
 
-// CGAL's OFF reader reserves memory for the counts its header declares
-// (3 * 10^8 vertices took 7 GB before reading one): the counts are checked
-// against the bytes the stream holds first (every vertex and face takes at
-// least 2 bytes in any OFF form). The stream is left where it was.
-void check_off_counts(std::istream& in, const std::string& name) {
+// CGAL's OFF reader trusts its input more than a reader of arbitrary files
+// may (found by the fuzz target, read_mesh_fuzz.cpp): it reserves memory
+// for the counts the header declares (3 x 10^8 vertices took 7 GB before
+// reading one), turns large binary counts into an int overflow, and casts
+// each face index, read as a double, to an unsigned integer however large
+// or negative it is (undefined behaviour), and doubles the edge count in
+// an int. So the file is scanned here
+// first, line by line ('#' starts a comment): the keyword ([ST][C][N]OFF;
+// binary OFF is refused), counts no larger than the stream's bytes, then
+// after the vertex lines each face line's size and indices must be
+// integers, the indices in [0, vertices). Anything else in the header is
+// refused; a file that ends early is left to CGAL. The stream is left where
+// it was.
+void check_off(std::istream& in, const std::string& name) {
   const std::streampos start = in.tellg();
   if (start < 0) return;  // not seekable: nothing to measure against
   in.seekg(0, std::ios::end);
   const std::streamoff bytes = in.tellg() - start;
   in.seekg(start);
-  std::vector<std::string> tokens;
+  auto fail = [&](const std::string& what) {
+    in.clear();
+    in.seekg(start);
+    throw InvalidArgument(name + ": " + what);
+  };
+  auto integer = [](const std::string& t, long long& value) {
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
+    return ec == std::errc() && end == t.data() + t.size();
+  };
+  // The meaningful lines, split into tokens, one at a time.
   std::string line;
-  for (int lines = 0; lines < 64 && tokens.size() < 4 && std::getline(in, line); ++lines) {
-    const std::size_t hash = line.find('#');
-    std::istringstream words(line.substr(0, hash));
-    for (std::string w; tokens.size() < 4 && words >> w;) tokens.push_back(w);
+  auto next_line = [&](std::vector<std::string>& tokens) {
+    tokens.clear();
+    while (tokens.empty() && std::getline(in, line)) {
+      std::istringstream words(line.substr(0, line.find('#')));
+      for (std::string w; words >> w;) tokens.push_back(w);
+    }
+    return !tokens.empty();
+  };
+  std::vector<std::string> header, tokens;
+  if (!next_line(header)) fail("empty OFF file");
+  const std::string keyword = header[0];
+  const std::size_t off = keyword.rfind("OFF");
+  if (off == std::string::npos || off + 3 != keyword.size())
+    fail("the OFF file starts with '" + keyword + "', not an OFF keyword");
+  for (std::size_t i = 0; i < off; ++i)
+    if (std::string("STCN").find(keyword[i]) == std::string::npos)
+      fail("the OFF variant " + keyword + " is not read (OFF, COFF, NOFF, STOFF and their combinations are)");
+  header.erase(header.begin());
+  while (header.size() < 3 && next_line(tokens)) header.insert(header.end(), tokens.begin(), tokens.end());
+  // CGAL reads the counts as tokens and the vertices by lines: what follows
+  // the counts on their line would be taken for a vertex.
+  if (header.size() > 3 && header[0].rfind("BINARY", 0) != 0)
+    fail("the OFF counts' line holds more than the three counts");
+  for (const std::string& t : header)
+    if (t.rfind("BINARY", 0) == 0) fail("binary OFF is not read (use ASCII OFF, PLY or OBJ)");
+  long long counts[2];
+  for (int k = 0; k < 2; ++k) {
+    if (header.size() < 3 || !integer(header[static_cast<std::size_t>(k)], counts[k]) || counts[k] < 0)
+      fail("the OFF header needs the counts of vertices, faces and edges");
+    if (static_cast<double>(counts[k]) > static_cast<double>(bytes) / 2.0)
+      fail("the OFF header declares " + header[static_cast<std::size_t>(k)] + (k == 0 ? " vertices" : " faces") +
+           " in a file of " + std::to_string(bytes) + " bytes");
+  }
+  // The third count (edges) is read as an int and doubled.
+  long long edges = 0;
+  if (!integer(header[2], edges) || edges < 0 || edges > (1LL << 30))
+    fail("the OFF header's edge count '" + header[2] + "' is not an integer in [0, 2^30]");
+  for (long long v = 0; v < counts[0]; ++v)
+    if (!next_line(tokens)) return in.clear(), void(in.seekg(start));
+  for (long long f = 0; f < counts[1]; ++f) {
+    if (!next_line(tokens)) break;
+    long long size = 0;
+    if (!integer(tokens[0], size) || size < 1 || static_cast<std::size_t>(size) >= tokens.size())
+      fail("OFF face " + std::to_string(f) + " does not start with its number of vertices and list them");
+    for (long long i = 1; i <= size; ++i) {
+      long long index = 0;
+      if (!integer(tokens[static_cast<std::size_t>(i)], index) || index < 0 || index >= counts[0])
+        fail("OFF face " + std::to_string(f) + " names vertex '" + tokens[static_cast<std::size_t>(i)] +
+             "'; there are " + std::to_string(counts[0]));
+    }
   }
   in.clear();
   in.seekg(start);
-  // The keyword (OFF, COFF, NOFF, ...) may be followed on its line by the counts.
-  if (tokens.size() < 3 || tokens[0].find("OFF") == std::string::npos) return;
-  for (std::size_t k = 1; k < 3; ++k) {
-    char* end = nullptr;
-    const double count = std::strtod(tokens[k].c_str(), &end);
-    if (end != tokens[k].c_str() + tokens[k].size()) return;  // not counts: CGAL decides
-    if (count > static_cast<double>(bytes) / 2.0)
-      throw InvalidArgument(name + ": the OFF header declares " + tokens[k] + (k == 1 ? " vertices" : " faces") +
-                            " in a file of " + std::to_string(bytes) + " bytes");
+}
+
+// CGAL's PLY reader trusts the header more than a reader of arbitrary files
+// may (each found by the fuzz target, read_mesh_fuzz.cpp): a `property`
+// before any `element` is read into an element that is not there; a vertex
+// coordinate of an integer type, or a `halfedge` element's index of a
+// floating type, is read through a null pointer; and it loops over an
+// element's declared count whatever the file holds (a negative count wraps
+// around to 2^64 - n). So the header is
+// checked here first: properties follow an element, x, y and z of the
+// vertices are float or double, no halfedge element, no count above the
+// stream's bytes, list counts of 8 or 16 bits. The stream is left where it was.
+void check_ply_header(std::istream& in, const std::string& name) {
+  const std::streampos start = in.tellg();
+  if (start < 0) return;  // not seekable: nothing to measure against
+  in.seekg(0, std::ios::end);
+  const std::streamoff bytes = in.tellg() - start;
+  in.seekg(start);
+  auto fail = [&](const std::string& what) {
+    in.clear();
+    in.seekg(start);
+    throw InvalidArgument(name + ": " + what);
+  };
+  std::string element;  // the element being declared; empty before the first
+  std::string line;
+  for (int lines = 0; lines < 100000 && std::getline(in, line); ++lines) {
+    std::istringstream words(line);
+    std::string keyword;
+    if (!(words >> keyword)) continue;
+    if (keyword == "end_header") break;
+    if (keyword == "property") {
+      if (element.empty()) fail("a PLY property is declared before any element");
+      std::string type, property;
+      words >> type >> property;
+      if (type == "list") {  // list COUNT_TYPE ITEM_TYPE NAME
+        const std::string size_type = property;
+        std::string item;
+        words >> item >> property;
+        // CGAL sizes each list by the count it reads, before reading the
+        // items: a 32-bit count can ask for gigabytes. 8- and 16-bit counts
+        // (uchar, as every common exporter writes) bound a list to 65,535.
+        static const std::set<std::string> kSmall = {"char",  "uchar",  "int8",  "uint8",
+                                                     "short", "ushort", "int16", "uint16"};
+        if (!kSmall.count(size_type))
+          fail("the PLY list " + property + " has " + size_type +
+               " counts; 8- or 16-bit counts (such as uchar) are read");
+      }
+      if ((element == "vertex" || element == "vertices") && (property == "x" || property == "y" || property == "z") &&
+          type != "float" && type != "float32" && type != "double" && type != "float64")
+        fail("the PLY vertex coordinate " + property + " has type " + type + " (float or double are read)");
+    }
+    if (keyword == "element") {
+      std::string count;
+      words >> element >> count;
+      if (element.empty()) element = "?";
+      if (element == "halfedge") fail("PLY halfedge elements are not read");
+      unsigned long long n = 0;
+      const auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), n);
+      if (ec != std::errc() || end != count.data() + count.size())
+        fail("the PLY element " + element + " has count '" + count + "', not a non-negative integer");
+      if (static_cast<double>(n) > static_cast<double>(bytes))
+        fail("the PLY header declares " + count + " " + element + " elements in a file of " + std::to_string(bytes) +
+             " bytes");
+    }
   }
+  in.clear();
+  in.seekg(start);
 }
 
 }  // namespace
 
 TriangleMesh read_mesh(std::istream& in, MeshFormat format, const std::string& name) {
-  if (format == MeshFormat::Off) check_off_counts(in, name);
+  if (format == MeshFormat::Off) check_off(in, name);
+  if (format == MeshFormat::Ply) check_ply_header(in, name);
   std::vector<CgalPoint> points;
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;

@@ -78,6 +78,19 @@ TEST(MeshFile, BadFilesNameTheProblem) {
   EXPECT_NE(message("garbage\x01\x02", MeshFormat::Ply), "no error");
   EXPECT_NE(message("OFF\n3 1 0\n0 0 0\n1 0 0\n", MeshFormat::Off), "no error");
   EXPECT_NE(message("OFF\n4000000000 1 0\n", MeshFormat::Off), "no error");
+  // CGAL's PLY header parser would read a property into an element that is
+  // not there, or loop over a count the file cannot hold: refused first.
+  EXPECT_EQ(message("ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n", MeshFormat::Ply),
+            "test: a PLY property is declared before any element");
+  EXPECT_EQ(message("ply\nformat ascii 1.0\nelement thing 1000000000000\nend_header\n", MeshFormat::Ply),
+            "test: the PLY header declares 1000000000000 thing elements in a file of 60 bytes");
+  EXPECT_EQ(message(std::string("OFF BINARY\n") + std::string(12, '\xff'), MeshFormat::Off),
+            "test: binary OFF is not read (use ASCII OFF, PLY or OBJ)");
+  EXPECT_EQ(message("ply\nformat ascii 1.0\nelement vertex 1\nproperty uint32 x\nend_header\n0\n", MeshFormat::Ply),
+            "test: the PLY vertex coordinate x has type uint32 (float or double are read)");
+  EXPECT_EQ(
+      message("ply\nformat ascii 1.0\nelement halfedge 1\nproperty float source\nend_header\n0\n", MeshFormat::Ply),
+      "test: PLY halfedge elements are not read");
   // CGAL would reserve memory for the declared counts: refused first.
   EXPECT_EQ(message("OFF\n300000000 300000000 0\n", MeshFormat::Off),
             "test: the OFF header declares 300000000 vertices in a file of 26 bytes");

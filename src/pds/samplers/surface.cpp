@@ -77,9 +77,9 @@ void validate_mesh(const TriangleMesh& mesh) {
     throw InvalidArgument("mesh: more than 2^31 vertices or triangles");
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
     for (double x : mesh.vertices[v])
-      if (!std::isfinite(x) || std::abs(x) > 1e150)
+      if (!std::isfinite(x) || std::abs(x) > 1e149)
         throw InvalidArgument("mesh: vertex " + std::to_string(v) +
-                              " has a coordinate that is not finite or beyond 1e150");
+                              " has a coordinate that is not finite or beyond 1e149 in magnitude");
   for (std::size_t k = 0; k < mesh.triangles.size(); ++k)
     for (std::uint32_t v : mesh.triangles[k])
       if (v >= mesh.vertices.size())
