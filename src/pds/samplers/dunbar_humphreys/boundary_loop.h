@@ -10,8 +10,8 @@
 // inside the domain): the paper's scalloped region restricted to the circle,
 // a set of angular intervals, which is what we store. Front samples are taken
 // in insertion order (breadth first, which keeps memory access local; the
-// guarantees do not depend on the order), from one seed in a box and four on
-// a torus (see the seeds below: one seed's front meets itself along two
+// guarantees do not depend on the order), from one seed in a box and 16 on a
+// torus (see the seeds below: one seed's front meets itself along two
 // axis-parallel lines of the torus). A front sample's available arcs
 // are computed from the samples within 2r (a sample at distance d blocks the
 // directions within acos(d / 2r) of its own); then points are drawn uniformly
@@ -167,8 +167,8 @@ struct ScalarNeighbours {
 };
 
 /// Seeds of the front on a torus, and the tries to place them (below).
-inline constexpr std::size_t kTorusSeeds = 4;
-inline constexpr int kTorusSeedAttempts = 64;
+inline constexpr std::size_t kTorusSeeds = 16;
+inline constexpr int kTorusSeedAttempts = 256;
 
 /// Boundary sampling with a given neighbourhood kernel (inlined into each
 /// kernel's entry point, so that the AVX-512 one is compiled for its target).
@@ -201,12 +201,16 @@ template <class Kernel>
     // images, on the lines x = x0 + Lx/2 and y = y0 + Ly/2: a seam of packing
     // defects parallel to the axes, a cross along the axes in the averaged
     // periodogram (twice the power of the other low frequencies). The fronts
-    // of a few seeds at random places meet on the edges of their Voronoi
-    // cells instead, which point every way. More seeds would add seams (low-
-    // frequency power); a box needs none (one front never meets itself
-    // there). Seeds are kept 4 rc apart, so that each one's circle is free
-    // when it is processed (its first child is at exactly rc); a torus too
-    // small for that keeps fewer. Measured in docs/dunbar-humphreys.md.
+    // of several seeds at random places meet on the edges of their Voronoi
+    // cells instead, which point every way. With 4 seeds a cell often spans
+    // a whole period and is bounded by its own image (axis-parallel again:
+    // the axes kept 1.13 times the power); 16 leave 1.06, while every seed
+    // adds seams, power at low frequencies (64 seeds: the cross is gone
+    // entirely but that power doubles). A box needs none (one front never
+    // meets itself there). Seeds are kept 4 rc apart, so that each one's
+    // circle is free when it is processed (its first child is at exactly
+    // rc); a torus too small for all of them keeps fewer. Measured in
+    // docs/dunbar-humphreys.md.
     for (int attempt = 0; attempt < kTorusSeedAttempts && points.size() < kTorusSeeds; ++attempt) {
       const Point<2> q = uniform_point(rng, domain);
       bool apart = true;
