@@ -18,6 +18,7 @@
 #include "pds/samplers/dunbar_humphreys.h"
 #include "pds/samplers/ebeida.h"
 #include "pds/samplers/jones.h"
+#include "pds/samplers/maximal_darts.h"
 #include "pds/samplers/wei.h"
 
 namespace {
@@ -131,7 +132,34 @@ void BM_Ebeida3D(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
   state.counters["N"] = static_cast<double>(count);
 }
-BENCHMARK(BM_Ebeida3D)->Arg(100'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Ebeida3D)->Arg(100'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+/// Maximal dart throwing decided window by window, state.range(1) threads
+/// (the same samples for every count).
+void BM_MaximalDarts(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(1));
+  run(state, 0.6965, [&](double r) { return pds::maximal_darts<2>({r, threads}, pds::Domain<2>::unit(true), 1); });
+}
+BENCHMARK(BM_MaximalDarts)
+    ->ArgsProduct({{10'000, 100'000, 1'000'000, 10'000'000}, {1}})
+    ->ArgsProduct({{1'000'000, 10'000'000}, {2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+/// The same on the 3D unit torus (N r^3 = 0.7336 at saturation).
+void BM_MaximalDarts3D(benchmark::State& state) {
+  const double radius = std::cbrt(0.7336 / static_cast<double>(state.range(0)));
+  const int threads = static_cast<int>(state.range(1));
+  std::size_t count = 0;
+  for (auto _ : state) {
+    const auto points = pds::maximal_darts<3>({radius, threads}, pds::Domain<3>::unit(true), 1);
+    count = points.size();
+    benchmark::DoNotOptimize(points.data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
+  state.counters["N"] = static_cast<double>(count);
+}
+BENCHMARK(BM_MaximalDarts3D)->ArgsProduct({{100'000, 1'000'000}, {1, 2}})->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The baseline: dart throwing with its default failure bound, which
 // stops near rho 0.75 without maximality. Its failure bound grows with N, so

@@ -17,10 +17,10 @@
 
 #include <cmath>
 #include <cstring>
-#include <span>
 #include <limits>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,6 +31,7 @@
 #include "pds/analysis/spectrum.h"
 #include "pds/error.h"
 #ifdef PDS_WITH_JSON
+#include "pds/io/chunks.h"
 #include "pds/io/report_json.h"
 #endif
 #include "pds/point.h"
@@ -111,8 +112,10 @@ int dim_of_sets(const std::vector<InputArray>& sets) {
 int plane_or_space_dim_of_sets(const std::vector<InputArray>& sets) {
   const int dim = dim_of_sets(sets);
   if (dim != pds::kPlaneDim && dim != pds::kSpaceDim)
-    throw pds::InvalidArgument("points must be arrays of shape (N, 2) or (N, 3) (spectra and the pair correlation "
-                               "are measured in 2D and 3D only), got " + std::to_string(dim) + " columns");
+    throw pds::InvalidArgument(
+        "points must be arrays of shape (N, 2) or (N, 3) (spectra and the pair correlation "
+        "are measured in 2D and 3D only), got " +
+        std::to_string(dim) + " columns");
   return dim;
 }
 
@@ -186,14 +189,15 @@ pds::ImageOnBounds image_over(const InputArray& a, const pds::GenerateRequest& r
 
 /// generate() with the constraints of docs/density.md: a density image with
 /// its radius range, a mask image, fixed points.
-py::array_t<double> generate_constrained(const std::string& method, std::optional<double> radius, int dim,
-                                         std::vector<double> lo, std::vector<double> hi, bool torus, std::uint64_t seed,
-                                         int threads, std::uint64_t max_points, std::map<std::string, double> params,
+py::array_t<double> generate_constrained(const std::string& method, std::optional<std::uint64_t> count,
+                                         std::optional<double> radius, int dim, std::vector<double> lo,
+                                         std::vector<double> hi, bool torus, std::uint64_t seed, int threads,
+                                         std::uint64_t max_points, std::map<std::string, double> params,
                                          std::optional<InputArray> density,
                                          std::optional<std::pair<double, double>> radius_range, bool invert,
                                          std::optional<InputArray> mask, std::optional<InputArray> fixed) {
-  pds::GenerateRequest request = make_request(std::nullopt, radius, dim, std::move(lo), std::move(hi), torus, seed,
-                                              threads, max_points, std::move(params));
+  pds::GenerateRequest request = make_request(count, radius, dim, std::move(lo), std::move(hi), torus, seed, threads,
+                                              max_points, std::move(params));
   pds::RequestConstraints& c = request.constraints;
   if (density.has_value() != radius_range.has_value())
     throw pds::InvalidArgument(density ? "density needs radius_range=(rmin, rmax)" : "radius_range needs density");
@@ -230,7 +234,8 @@ py::list methods() {
                         py::arg("min_distance") = m.min_distance, py::arg("maximal") = m.maximal,
                         py::arg("exact_count") = m.exact_count, py::arg("progressive") = m.progressive,
                         py::arg("deterministic") = m.deterministic, py::arg("square_torus_only") = m.square_torus_only,
-                        py::arg("dims") = py::module_::import("builtins").attr("range")(m.dims.lo, m.dims.hi + 1), py::arg("params") = params));
+                        py::arg("dims") = py::module_::import("builtins").attr("range")(m.dims.lo, m.dims.hi + 1),
+                        py::arg("params") = params));
   }
   return out;
 }
@@ -317,6 +322,20 @@ py::tuple min_distance(const InputArray& array, std::vector<double> lo, std::vec
 }
 
 #ifdef PDS_WITH_JSON
+/// A chunked set (pds chunks: a manifest.json and its NPY chunks) as one
+/// (N, D) array in canonical order, and the manifest's region and torus.
+py::tuple read_chunks(const std::string& path) {
+  pds::ChunkManifest m;
+  pds::PointCloud cloud;
+  {
+    py::gil_scoped_release release;
+    cloud = pds::read_chunks(path, &m);
+  }
+  const auto n = static_cast<py::ssize_t>(cloud.size());
+  return py::make_tuple(adopt(std::move(cloud.coords), {n, static_cast<py::ssize_t>(m.dim)}), m.lo, m.hi,
+                        !m.torus_lo.empty() && m.torus_lo == m.lo && m.torus_hi == m.hi);
+}
+
 /// The analysis report as the JSON `pds analyze` prints (the Python side
 /// parses it), so the keys, their order and their values are the CLI's.
 std::string analyze_json(const std::vector<InputArray>& arrays, const std::vector<double>& lo,
@@ -376,10 +395,10 @@ PYBIND11_MODULE(_pds, m) {
         py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"), py::arg("params"),
         py::arg("sized"), py::arg("float32") = false);
 #ifdef PDS_WITH_RENDER
-  m.def("generate_constrained", &generate_constrained, py::arg("method"), py::arg("radius"), py::arg("dim"),
-        py::arg("lo"), py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"),
-        py::arg("params"), py::arg("density"), py::arg("radius_range"), py::arg("invert"), py::arg("mask"),
-        py::arg("fixed"));
+  m.def("generate_constrained", &generate_constrained, py::arg("method"), py::arg("count"), py::arg("radius"),
+        py::arg("dim"), py::arg("lo"), py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"),
+        py::arg("max_points"), py::arg("params"), py::arg("density"), py::arg("radius_range"), py::arg("invert"),
+        py::arg("mask"), py::arg("fixed"));
 #endif
   m.def("methods", &methods);
   m.def("periodogram", &periodogram, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
@@ -391,6 +410,7 @@ PYBIND11_MODULE(_pds, m) {
   m.def("discrepancy", &discrepancy, py::arg("points"), py::arg("lo"), py::arg("hi"), py::arg("kind"));
   m.def("min_distance", &min_distance, py::arg("points"), py::arg("lo"), py::arg("hi"), py::arg("torus"));
 #ifdef PDS_WITH_JSON
+  m.def("read_chunks", &read_chunks, py::arg("path"));
   m.def("analyze_json", &analyze_json, py::arg("sets"), py::arg("lo"), py::arg("hi"), py::arg("torus"),
         py::arg("radius"), py::arg("max_frequency"), py::arg("spectrum"), py::arg("pcf_r_max"),
         py::arg("pcf_bandwidth"));

@@ -12,6 +12,7 @@ packages=(
   libcgal-dev                                  # Delaunay/Voronoi (the cgal component)
   pybind11-dev python3-dev python3-numpy       # the Python module (for Debian's /usr/bin/python3)
   python3-scipy python3-pytest python3-matplotlib  # its tests, the SciPy drop-in's reference, the example
+  libopenmpi-dev openmpi-bin                   # pds-mpi (optional: chunks across processes and machines)
 )
 
 missing=()

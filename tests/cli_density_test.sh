@@ -72,4 +72,46 @@ expect_exit 2 "fixed points have dimension 3" -- generate bridson --fixed "$tmp/
 printf 'x,y\n0.5,zz\n' >"$tmp/bad.csv"
 expect_exit 2 "bad.csv" -- generate bridson --fixed "$tmp/bad.csv" --radius 0.1
 
+# Elimination with a density (count from the field) and with a mask (exact count).
+expect_exit 0 "" -- generate elimination --density "$in/gradient.png" --radius-range 0.01,0.04 --seed 2 -o "$tmp/e.csv"
+centre=$(awk -F, 'NR > 1 && $1 > 0.4 && $1 < 0.6 && $2 > 0.4 && $2 < 0.6' "$tmp/e.csv" | wc -l)
+corner=$(awk -F, 'NR > 1 && $1 < 0.2 && $2 < 0.2' "$tmp/e.csv" | wc -l)
+[[ $centre -gt $((3 * corner)) && $corner -gt 0 ]] && ok || bad "elimination density: centre $centre vs corner $corner"
+expect_exit 0 "" -- generate elimination --mask "$in/mask.png" --count 2000 --bounds 0,0,10,10 -o "$tmp/em.csv"
+inband=$(awk -F, 'NR > 1 && ($1 < 0.4 || $1 > 9.3 || (($1 - 4) ^ 2 < 1.9 && ($2 - 5) ^ 2 < 1.9))' "$tmp/em.csv" | wc -l)
+[[ $inband -eq 0 && $(wc -l <"$tmp/em.csv") -eq 2001 ]] && ok || bad "elimination mask: $inband outside"
+expect_exit 2 "fixed points are not taken" -- generate elimination --fixed "$tmp/out.csv" --count 10
+expect_exit 2 "elimination needs --count" -- generate elimination --mask "$in/mask.png"
+
+# Several classes (Wei 2010): a class column, counts about 16 : 4 : 1, the
+# same seed the same bytes, every pair at least its classes' distance apart
+# (all pairs, with the given matrix: within 0.03 and 0.05, across 0.04).
+expect_exit 0 "" -- generate dart-throwing --classes 0.03,0.06,0.12 --seed 4 -o "$tmp/c.csv"
+expect_exit 0 "" -- generate dart-throwing --classes 0.03,0.06,0.12 --seed 4 -o "$tmp/c2.csv"
+cmp -s "$tmp/c.csv" "$tmp/c2.csv" && ok || bad "classes: same seed, other bytes"
+[[ $(head -1 "$tmp/c.csv") == "x,y,class" ]] && ok || bad "classes header: $(head -1 "$tmp/c.csv")"
+read -r n0 n1 n2 < <(awk -F, 'NR > 1 { n[$3]++ } END { print n[0] + 0, n[1] + 0, n[2] + 0 }' "$tmp/c.csv")
+[[ $n2 -gt 0 && $((n0 / n2)) -ge 10 && $((n0 / n2)) -le 22 && $((n1 / n2)) -ge 2 && $((n1 / n2)) -le 6 ]] && ok ||
+  bad "classes: counts $n0 $n1 $n2"
+expect_exit 0 "" -- generate dart-throwing --classes 0.03,0.05 --class-matrix 0.03,0.04,0.04,0.05 --seed 2 -o "$tmp/m.csv"
+close=$(awk -F, 'NR > 1 { x[NR] = $1; y[NR] = $2; c[NR] = $3; n = NR }
+  END { r[0, 0] = 0.03; r[1, 1] = 0.05; r[0, 1] = r[1, 0] = 0.04
+        for (i = 2; i <= n; i++) for (j = 2; j < i; j++) {
+          d = (x[i] - x[j]) ^ 2 + (y[i] - y[j]) ^ 2; s = r[c[i], c[j]]
+          if (d < s * s * (1 - 1e-12)) bad++ }
+        print bad + 0 }' "$tmp/m.csv")
+[[ $close -eq 0 ]] && ok || bad "class matrix: $close pairs too close"
+expect_exit 0 "" -- generate dart-throwing --classes 0.1,0.2 --dim 3 --torus -o "$tmp/c3.ply"
+head -c 200 "$tmp/c3.ply" | grep -q "property int class" && ok || bad "classes: no class property in the PLY"
+# pds analyze --class-dots leaves the class column out (2D, the right count) and draws by class.
+expect_exit 0 "" -- analyze "$tmp/c.csv" --class-dots 0.002,0.004,0.008 --plot "$tmp/c.png"
+grep -q "\"dim\": 2" "$tmp/out" && grep -q "\"count\": $((n0 + n1 + n2))" "$tmp/out" && [[ -s $tmp/c.png ]] && ok ||
+  bad "analyze --class-dots: $(head -c 300 "$tmp/out")"
+expect_exit 2 "has class 2; 2 radii cover classes 0 to 1" -- analyze "$tmp/c.csv" --class-dots 0.002,0.004
+expect_exit 2 "dart-throwing only" -- generate bridson --classes 0.02,0.04
+expect_exit 2 "--radius does not apply with --classes" -- generate dart-throwing --classes 0.02 --radius 0.1
+expect_exit 2 "not symmetric" -- generate dart-throwing --classes 0.02,0.04 --class-matrix 0.02,0.01,0.015,0.04
+expect_exit 2 "class radius must be" -- generate dart-throwing --classes 0.02,-1
+expect_exit 2 "--class-matrix needs --classes" -- generate dart-throwing --class-matrix 0.1 --radius 0.1
+
 finish cli_density

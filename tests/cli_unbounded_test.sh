@@ -51,6 +51,25 @@ if [[ $(check "$tmp/whole.npy" "$tmp/one") == same ]]; then ok; else bad "one ch
 if [[ $(check "$tmp/other.npy" "$tmp/chunks") == different ]]; then ok; else bad "another seed gave the same set"; fi
 if [[ $(head -1 "$tmp/cube.csv") == x,y,z && $(wc -l <"$tmp/cube.csv") -gt 20 ]]; then ok; else bad "3D region"; fi
 
+# pds analyze reads a manifest as one set, over the chunks' region: the
+# whole region's count, minimum distance and nearest-neighbour mean.
+expect_exit 0 "" -- analyze -r 1 "$tmp/chunks/manifest.json"
+cp "$tmp/out" "$tmp/a_chunks.json"
+expect_exit 0 "" -- analyze -r 1 "$tmp/whole.npy" --bounds -3.5,2,27,19
+if python3 - "$tmp/a_chunks.json" "$tmp/out" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+keys = ('count', 'min_distance', 'mean_nn_distance', 'domain')
+sys.exit(0 if all(a[k] == b[k] for k in keys) and a['count'] > 300 else 1)
+PY
+then ok; else bad "analyze of the manifest differs from analyze of the whole region"; fi
+cp "$tmp/chunks/manifest.json" "$tmp/chunks/saved.json"
+printf '{"format": "pds-chunks", "version": 1, "dim": 2' >"$tmp/chunks/manifest.json"
+expect_exit 2 "not valid JSON" -- analyze "$tmp/chunks/manifest.json"
+sed 's/"count": 366/"count": 365/' "$tmp/chunks/saved.json" >"$tmp/chunks/manifest.json"
+expect_exit 2 "count" -- analyze "$tmp/chunks/manifest.json"
+mv "$tmp/chunks/saved.json" "$tmp/chunks/manifest.json"
+
 expect_exit 2 "radius" -- unbounded -r 0 --region 0,0,1,1 -o "$tmp/x.csv"
 expect_exit 2 "radius" -- unbounded -r nan --region 0,0,1,1 -o "$tmp/x.csv"
 expect_exit 2 "--region needs 4 values" -- unbounded -r 1 --region 0,0,1 -o "$tmp/x.csv"

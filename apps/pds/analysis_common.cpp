@@ -98,8 +98,13 @@ PointCloud generate_with_progress(const std::string& method, GenerateRequest req
 }
 
 void write_output(const std::string& path, const PointCloud& points, NpyType npy_type) {
+  write_output(path, points, coordinate_columns(points.dim), npy_type);
+}
+
+void write_output(const std::string& path, const PointCloud& table, const std::vector<Column>& columns,
+                  NpyType npy_type) {
   if (path != "-") interrupt_removes(temporary_path(path));
-  write_points(path, points, npy_type);
+  write_table(path, table, columns, npy_type);
   interrupt_removes("");
 }
 

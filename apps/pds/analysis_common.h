@@ -72,6 +72,9 @@ PointCloud generate_with_progress(const std::string& method, GenerateRequest req
 
 /// write_points() whose temporary file a Ctrl-C removes (terminal.h).
 void write_output(const std::string& path, const PointCloud& points, NpyType npy_type = NpyType::Float64);
+/// The same with named columns (write_table()).
+void write_output(const std::string& path, const PointCloud& table, const std::vector<Column>& columns,
+                  NpyType npy_type = NpyType::Float64);
 
 /// Bytes from a size such as 512M, 2G, 1.5GiB or 1000000 (K, M, G, T: powers
 /// of 1024); throws InvalidArgument naming the option.

@@ -6,6 +6,7 @@
 // set, as they did for a single file; the spectrum and the PCF are averaged
 // over all sets, and the spacing and discrepancy fields are means over them.
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <span>
@@ -14,7 +15,9 @@
 #include "analysis_common.h"
 #include "commands.h"
 #include "pds/analysis/report.h"
+#include "pds/detail/format.h"
 #include "pds/error.h"
+#include "pds/io/chunks.h"
 #include "pds/io/plot.h"
 #include "pds/io/point_file.h"
 #include "pds/io/report_json.h"
@@ -38,6 +41,8 @@ struct AnalyzeOptions {
   double pcf_bandwidth = 0, pcf_max = 0;
   double disk_radius = 0;
   double dot_radius = 0;
+  std::vector<double> class_dots;  // --class-dots: the dot radius of each class
+  std::vector<double> point_dots;  // the first set's dots, one a point, from its class column
   // Outputs.
   std::string spectrum, radial, pcf, plot;
 };
@@ -108,8 +113,33 @@ AnalysisReport analyze_and_draw(const std::vector<PointSet<D>>& sets, const Doma
   }
   if constexpr (D == 2)
     if (!opt.plot.empty())
-      plot_points(sets[0], domain, opt.plot, {.disk_radius = opt.disk_radius, .dot_radius = opt.dot_radius});
+      plot_points(sets[0], domain, opt.plot,
+                  {.disk_radius = opt.disk_radius, .dot_radius = opt.dot_radius, .dot_radii = opt.point_dots});
   return report;
+}
+
+// --class-dots: takes the class column off every set and gives the first
+// set's points their dot radii.
+void strip_classes(std::vector<PointCloud>& clouds, AnalyzeOptions& opt) {
+  for (const double r : opt.class_dots)
+    if (!(r > 0) || !std::isfinite(r))
+      throw InvalidArgument("--class-dots: radii must be positive, got " + detail::format_number(r));
+  for (std::size_t s = 0; s < clouds.size(); ++s) {
+    PointCloud& c = clouds[s];
+    if (c.dim < 2) throw InvalidArgument("--class-dots: the points need a class column after their coordinates");
+    PointCloud stripped{c.dim - 1, {}};
+    stripped.coords.reserve(c.size() * static_cast<std::size_t>(stripped.dim));
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const double k = c.point(i)[c.dim - 1];
+      if (!(k >= 0 && k < static_cast<double>(opt.class_dots.size()) && k == std::floor(k)))
+        throw InvalidArgument("--class-dots: point " + std::to_string(i) + " has class " + detail::format_number(k) +
+                              "; " + std::to_string(opt.class_dots.size()) + " radii cover classes 0 to " +
+                              std::to_string(opt.class_dots.size() - 1));
+      stripped.coords.insert(stripped.coords.end(), c.point(i), c.point(i) + stripped.dim);
+      if (s == 0) opt.point_dots.push_back(opt.class_dots[static_cast<std::size_t>(k)]);
+    }
+    c = std::move(stripped);
+  }
 }
 
 }  // namespace
@@ -121,7 +151,8 @@ void add_analyze(CLI::App& app) {
       "Measure point sets (files, '-' for CSV on stdin, or --method to generate them); prints JSON. Minimum and "
       "nearest-neighbour distances and the L2-star, centered, wrap-around and mixture discrepancies in any "
       "dimension; relative radius and maximality (--radius) in 1 to 8; spectra and pair correlation in 2D and 3D");
-  cmd->add_option("file", opt->files, "Point files (.csv or .npy, any number of columns) or '-'; several files are several realisations");
+  cmd->add_option("file", opt->files, "Point files (.csv or .npy, any number of columns), '-', or a chunked set's manifest.json (pds chunks); "
+                  "several files are several realisations");
   add_domain_options(*cmd, opt->domain, false);
   auto* radius = cmd->add_option("--radius,-r", opt->radius,
                                  "Minimum distance to check (and, with --method, to generate with); also reports "
@@ -142,6 +173,10 @@ void add_analyze(CLI::App& app) {
   cmd->add_option("--disk-radius", opt->disk_radius, "--plot also draws disks of this radius around the points");
   cmd->add_option("--dot-radius", opt->dot_radius,
                   "--plot draws dots of this radius (domain units), e.g. for a stippling");
+  cmd->add_option("--class-dots", opt->class_dots,
+                  "The files' last column is a class (0, 1, ...; as pds generate --classes writes): it is left out "
+                  "of the analysis, and --plot draws class c's dots with the c-th radius given")
+      ->delimiter(',');
   cmd->add_option("--spectrum", opt->spectrum, "Write the averaged periodogram image (.png, .svg, .pdf)");
   cmd->add_option("--radial", opt->radial,
                   "Write the radial spectrum: CSV (frequency,power,anisotropy_db), or a plot for .png/.svg/.pdf");
@@ -181,12 +216,26 @@ void add_analyze(CLI::App& app) {
       for (const std::string& f : opt->files) stdin_uses += f == "-";
       if (stdin_uses > 1) throw InvalidArgument("'-' (standard input) can be given once");
       for (const std::string& f : opt->files) {
-        clouds.push_back(read_points(f));
+        if (f.size() >= 5 && f.compare(f.size() - 5, 5, ".json") == 0) {
+          // A chunked set (pds chunks): its chunks as one set, over the
+          // region they cover (a torus when they cover the whole torus)
+          // unless --bounds says otherwise.
+          ChunkManifest m;
+          clouds.push_back(read_chunks(f, &m));
+          if (opt->domain.bounds.empty()) {
+            opt->domain.bounds = m.lo;
+            opt->domain.bounds.insert(opt->domain.bounds.end(), m.hi.begin(), m.hi.end());
+            if (!m.torus_lo.empty() && m.torus_lo == m.lo && m.torus_hi == m.hi) opt->domain.torus = true;
+          }
+        } else {
+          clouds.push_back(read_points(f));
+        }
         if (clouds.back().dim != clouds.front().dim)
           throw InvalidArgument("'" + f + "' has dimension " + std::to_string(clouds.back().dim) + ", '" +
                                 opt->files.front() + "' has " + std::to_string(clouds.front().dim));
       }
       source.files = opt->files;
+      if (!opt->class_dots.empty()) strip_classes(clouds, *opt);
     }
     const int dim = clouds.front().dim;
     const AnalysisReport report = [&] {

@@ -4,6 +4,8 @@
 // input, pds::Failure otherwise) and turned into exit codes by main().
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -19,6 +21,26 @@ void add_render(CLI::App& app);
 void add_render_sheet(CLI::App& app);
 /// pds unbounded and pds chunks (apps/pds/unbounded.cpp).
 void add_unbounded(CLI::App& app);
+
+/// The processes that share one `chunks` run: chunk k is made by process
+/// k mod size; `max_all` replaces a vector, on every process, by its
+/// elementwise maximum over all of them (a collective: every process calls it
+/// once per run, also when its own chunks failed). One process: no-op.
+struct ChunkTeam {
+  int rank = 0;
+  int size = 1;
+  std::function<void(std::vector<std::int64_t>&)> max_all = [](std::vector<std::int64_t>&) {};
+};
+
+/// The `chunks` subcommand alone, its chunks split over `team` (pds-mpi);
+/// process 0 writes the manifest once every process has written its chunks.
+void add_chunks(CLI::App& app, const ChunkTeam& team);
+
+/// Parses and runs `app`, turning errors into exit codes (0 success, 2 bad
+/// usage or input, 1 failure) and one line on stderr prefixed with the
+/// app's name; quiet_usage_errors leaves out the line for bad usage (other
+/// processes of the same run print it).
+int run_app(CLI::App& app, int argc, char** argv, bool quiet_usage_errors = false);
 
 /// Options every command that takes a domain shares.
 struct DomainOptions {

@@ -4,8 +4,10 @@
 #include <memory>
 
 #include "analysis_common.h"
+#include "classes.h"
 #include "commands.h"
 #include "constraints.h"
+#include "mesh.h"
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/registry.h"
@@ -19,6 +21,8 @@ struct GenerateOptions {
   std::string output = "-";
   std::string dtype = "float64";
   ConstraintOptions constraints;
+  MeshOptions mesh;
+  ClassOptions classes;
 };
 
 }  // namespace
@@ -29,7 +33,7 @@ void add_generate(CLI::App& app) {
   cmd->footer(methods_help());
   cmd->add_option("method", opt->method, "Sampling method (see the list below)")->required();
   add_generation_options(*cmd, opt->generation);
-  cmd->add_option("--output,-o", opt->output, "Output file (.csv or .npy); '-' for CSV on stdout")
+  cmd->add_option("--output,-o", opt->output, "Output file (.csv, .npy or .ply); '-' for CSV on stdout")
       ->capture_default_str();
   cmd->add_option("--dtype", opt->dtype,
                   "Coordinates as float64 or float32 (.npy stores that type); float32 keeps --radius and the "
@@ -37,8 +41,20 @@ void add_generate(CLI::App& app) {
       ->check(CLI::IsMember({"float64", "float32"}))
       ->capture_default_str();
   add_constraint_options(*cmd, opt->constraints);
+  add_mesh_options(*cmd, opt->mesh);
+  add_class_options(*cmd, opt->classes);
 
-  cmd->callback([opt] {
+  cmd->callback([opt, cmd] {
+    if (classes_requested(opt->classes)) {
+      generate_classes(*cmd, opt->method, opt->classes, opt->generation, opt->output);
+      return;
+    }
+    if (!opt->classes.matrix.empty()) throw InvalidArgument("--class-matrix needs --classes");
+    if (mesh_requested(opt->mesh)) {
+      generate_on_mesh(*cmd, opt->method, opt->mesh, opt->generation, opt->output);
+      return;
+    }
+    if (!opt->mesh.vertex_density.empty()) throw InvalidArgument("--vertex-density needs --mesh");
     GenerateRequest request = generation_request(opt->generation);
     apply_constraint_options(opt->constraints, request);
     request.float32 = opt->dtype == "float32";

@@ -46,7 +46,8 @@ void add_field_options(CLI::App& cmd, UnboundedOptions& o) {
                  "--region must lie inside it")
       ->delimiter(',');
   cmd.add_option("--darts-per-cell", o.darts_per_cell,
-                 "Expected darts a cell of edge r/sqrt(D): more darts, fewer gaps (docs/unbounded.md)")
+                 "Expected darts a cell of edge r/sqrt(D) before open cells are refined: only the work depends on it "
+                 "(docs/unbounded.md)")
       ->capture_default_str();
   cmd.add_option("--max-points", o.max_points, "Refuse regions that could hold more points")->capture_default_str();
 }
@@ -96,6 +97,7 @@ nlohmann::ordered_json stats_json(const UnboundedStats& s) {
   j["cells_touched"] = s.cells_touched;
   j["darts_settled"] = s.darts_settled;
   j["max_depth"] = s.max_depth;
+  j["max_level"] = s.max_level;
   j["margin_cells"] = s.margin_cells;
   return j;
 }
@@ -121,7 +123,7 @@ double cut(double lo, double hi, double size, std::int64_t k, std::int64_t n) {
 }
 
 template <int D>
-void run_chunks(const UnboundedOptions& o) {
+void run_chunks(const UnboundedOptions& o, const ChunkTeam& team) {
   const UnboundedField<D> field = field_of<D>(o);
   const Domain<D> region = region_of<D>(o);
   if (!(std::isfinite(o.chunk) && o.chunk > 0.0))
@@ -192,33 +194,59 @@ void run_chunks(const UnboundedOptions& o) {
     }
     return name + ".npy";
   };
-  std::vector<std::size_t> counts(parts.size());
-  std::vector<UnboundedStats> stats(parts.size());
-  parallel_for(0, parts.size(), 1, o.threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const PointSet<D> points = field.sample(parts[k], &stats[k]);
-      write_points((fs::path(o.output) / name_of(indices[k])).string(), PointCloud::from(points));
-      counts[k] = points.size();
-    }
-  });
+  // This process's chunks (k mod size), sampled and written on its threads.
+  // Each chunk's count and stats go into a table that every process fills
+  // for its own chunks and leaves zero elsewhere, so that the elementwise
+  // maximum over the processes is the whole table; its last entry says
+  // whether any process failed. Every process reaches max_all once, also
+  // after a failure, so that none waits for ever.
+  constexpr std::size_t kFields = 4;  // count, margin, depth, level
+  std::vector<std::size_t> mine;
+  for (std::size_t k = static_cast<std::size_t>(team.rank); k < parts.size(); k += static_cast<std::size_t>(team.size))
+    mine.push_back(k);
+  std::vector<std::int64_t> table(parts.size() * kFields + 1, 0);
+  std::string error;
+  try {
+    parallel_for(0, mine.size(), 1, o.threads, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t q = begin; q < end; ++q) {
+        const std::size_t k = mine[q];
+        UnboundedStats stats;
+        const PointSet<D> points = field.sample(parts[k], &stats);
+        write_points((fs::path(o.output) / name_of(indices[k])).string(), PointCloud::from(points));
+        table[k * kFields] = static_cast<std::int64_t>(points.size());
+        table[k * kFields + 1] = stats.margin_cells;
+        table[k * kFields + 2] = stats.max_depth;
+        table[k * kFields + 3] = stats.max_level;
+      }
+    });
+  } catch (const std::exception& e) {
+    error = e.what();
+    table.back() = 1;
+  }
+  team.max_all(table);
+  if (!error.empty()) throw Failure(error);
+  if (table.back() != 0) throw Failure("another process failed to write its chunks; no manifest written");
+  if (team.rank != 0) return;
   std::uint64_t count = 0;
-  int max_margin = 0, max_depth = 0;
+  std::int64_t max_margin = 0, max_depth = 0, max_level = 0;
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    max_margin = std::max(max_margin, stats[k].margin_cells);
-    max_depth = std::max(max_depth, stats[k].max_depth);
-    count += counts[k];
+    max_margin = std::max(max_margin, table[k * kFields + 1]);
+    max_depth = std::max(max_depth, table[k * kFields + 2]);
+    max_level = std::max(max_level, table[k * kFields + 3]);
+    count += static_cast<std::uint64_t>(table[k * kFields]);
     nlohmann::ordered_json entry;
     entry["file"] = name_of(indices[k]);
     entry["index"] = std::vector<std::int64_t>(indices[k].begin(), indices[k].end());
     entry["lo"] = std::vector<double>(parts[k].lo.begin(), parts[k].lo.end());
     entry["hi"] = std::vector<double>(parts[k].hi.begin(), parts[k].hi.end());
-    entry["count"] = counts[k];
+    entry["count"] = table[k * kFields];
     list.push_back(entry);
   }
   manifest["count"] = count;
   manifest["max_margin_cells"] = max_margin;
   manifest["max_depth"] = max_depth;
+  manifest["max_level"] = max_level;
   manifest["chunks"] = list;
   const std::string path = (fs::path(o.output) / "manifest.json").string();
   std::ofstream file(path);
@@ -241,6 +269,10 @@ void add_unbounded(CLI::App& app) {
   cmd->add_option("--output,-o", opt->output, "Output file (.npy or .csv); '-' for CSV on stdout")->required();
   cmd->callback([opt] { by_dim(*opt, run_unbounded<2>, run_unbounded<3>); });
 
+  add_chunks(app, ChunkTeam{});
+}
+
+void add_chunks(CLI::App& app, const ChunkTeam& team) {
   auto chunks = std::make_shared<UnboundedOptions>();
   CLI::App* ccmd = app.add_subcommand(
       "chunks", "The unbounded field over a region in chunks: one NPY per chunk and manifest.json in a directory");
@@ -249,7 +281,12 @@ void add_unbounded(CLI::App& app) {
   ccmd->add_option("--output,-o", chunks->output, "Output directory")->required();
   ccmd->add_option("--threads,-t", chunks->threads, "Threads sampling chunks (0: all cores); the files do not depend on it")
       ->capture_default_str();
-  ccmd->callback([chunks] { by_dim(*chunks, run_chunks<2>, run_chunks<3>); });
+  ccmd->callback([chunks, team] {
+    if (region_dim(*chunks) == 2)
+      run_chunks<2>(*chunks, team);
+    else
+      run_chunks<3>(*chunks, team);
+  });
 }
 
 }  // namespace pds::cli

@@ -165,6 +165,10 @@ std::span<const Method> methods();
 /// The method called `name`; throws InvalidArgument naming the known ones.
 const Method& find_method(const std::string& name);
 
+/// Throws InvalidArgument for a parameter the method does not have, or a
+/// value outside its range (or not an integer where it must be one).
+void validate_params(const Method& m, const std::map<std::string, double>& params);
+
 /// Validates the request against the method (dimension, domain, sizing,
 /// parameters, point budget) and runs it; with request.float32, rounds the
 /// result keeping its promises (a method that promises a minimum distance

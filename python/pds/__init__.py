@@ -25,6 +25,7 @@ Conventions, the same as the command line's:
 from __future__ import annotations
 
 import json as _json
+import os as _os
 
 import numpy as _np
 
@@ -40,6 +41,7 @@ __all__ = [
     "pair_correlation",
     "discrepancy",
     "min_distance",
+    "read_chunks",
     "render",
     "MAX_POINTS",
     "qmc",
@@ -134,20 +136,22 @@ def generate(
     samples may go; ``fixed``, an (N, dim) array of points kept as the first
     N rows of the result. No sample's centre lies within another's radius
     (the larger of the two at their positions). The radius sizes the set:
-    ``count`` is not taken with them, nor float32.
+    ``count`` is not taken with them, nor float32. ``elimination`` takes
+    ``density`` and ``mask`` too (not ``fixed``), with ``count`` or, with a
+    density and no count, the count the field asks for; it promises no
+    minimum distance.
     """
     dt = _np.dtype(dtype)
     if dt not in (_np.float64, _np.float32):
         raise ValueError(f"dtype must be float64 or float32, got {dt}")
     if density is not None or mask is not None or fixed is not None or radius_range is not None or invert:
-        if count is not None:
-            raise ValueError(f"{method}: count is not taken with a density, a mask or fixed points (size by the radius)")
         if dt == _np.float32:
             raise ValueError(f"{method}: float32 is not taken with a density, a mask or fixed points (use float64)")
         if radius_range is not None and len(radius_range) != 2:
             raise ValueError(f"radius_range must be (rmin, rmax), got {radius_range!r}")
         return _pds.generate_constrained(
             method,
+            None if count is None else _uint(count, "count"),
             None if radius is None else float(radius),
             *_request_args(method, dim, bounds, torus, seed, threads, max_points, params),
             None if density is None else _np.asarray(density, dtype=float),
@@ -355,6 +359,23 @@ def min_distance(points, *, bounds=None, torus: bool = False):
     a = _np.asarray(_sets(points)[0], dtype=float)
     lo, hi = _bounds(bounds, _dim([a]))
     return _pds.min_distance(a, lo, hi, bool(torus))
+
+
+def read_chunks(path, *, with_region: bool = False):
+    """A chunked set written by ``pds chunks`` or ``pds-mpi chunks`` (the
+    path of its ``manifest.json``) as one (N, D) float64 array, sorted
+    lexicographically (the canonical order: the bytes of the region sampled
+    whole). The manifest and every chunk are checked (format, counts, each
+    point inside its chunk); anything wrong raises ValueError naming the file.
+    With ``with_region=True`` returns ``(points, bounds, torus)``: the region
+    the chunks cover as ``bounds`` (lo then hi) and whether it is the whole
+    torus of a periodic field, ready for ``analyze(points, bounds=bounds,
+    torus=torus)``.
+    """
+    points, lo, hi, torus = _pds.read_chunks(_os.fspath(path))
+    if with_region:
+        return points, list(lo) + list(hi), bool(torus)
+    return points
 
 
 def render(

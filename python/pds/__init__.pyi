@@ -1,4 +1,5 @@
-from typing import Any, Sequence, Union
+import os
+from typing import Any, Literal, Sequence, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -72,6 +73,16 @@ def discrepancy(
 def min_distance(
     points: npt.ArrayLike, *, bounds: _Bounds = ..., torus: bool = ...
 ) -> tuple[float, int | None, int | None]: ...
+@overload
+def read_chunks(path: str | os.PathLike[str]) -> npt.NDArray[np.float64]: ...
+@overload
+def read_chunks(
+    path: str | os.PathLike[str], *, with_region: Literal[True]
+) -> tuple[npt.NDArray[np.float64], list[float], bool]: ...
+@overload
+def read_chunks(
+    path: str | os.PathLike[str], *, with_region: bool
+) -> npt.NDArray[np.float64] | tuple[npt.NDArray[np.float64], list[float], bool]: ...
 def render(
     scene: str = ...,
     sampler: str = ...,

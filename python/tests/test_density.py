@@ -68,3 +68,17 @@ def test_bad_input_raises_value_error():
         pds.generate("bridson", mask=density, radius=0.1, dtype="float32")
     with pytest.raises(ValueError, match="needs dim=2"):
         pds.generate("bridson", radius=0.1, dim=3, mask=density)
+
+
+def test_elimination_takes_a_density_and_a_mask():
+    grey = np.tile(np.linspace(0, 1, 64), (64, 1))  # dark (dense) on the left
+    points = pds.generate("elimination", density=grey, radius_range=(0.01, 0.04), seed=1)
+    assert len(points) > 300
+    assert (points[:, 0] < 0.5).mean() > 0.6
+    mask = np.ones((32, 32))
+    mask[8:24, 8:24] = 0.0
+    inside = pds.generate("elimination", mask=mask, count=300, seed=2)
+    assert len(inside) == 300
+    assert ((inside > 0.25) & (inside < 0.75)).all()
+    with pytest.raises(ValueError, match="fixed points are not taken"):
+        pds.generate("elimination", count=10, fixed=[[0.5, 0.5]])

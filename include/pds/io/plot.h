@@ -15,6 +15,7 @@
 
 #include <span>
 #include <string>
+#include <vector>
 
 #include "pds/analysis/pair_correlation.h"
 #include "pds/analysis/spectrum.h"
@@ -30,10 +31,11 @@ enum class ImageFormat { Png, Svg, Pdf };
 ImageFormat image_format_for(const std::string& path);
 
 struct PointPlotOptions {
-  int size = 800;          // longer side of the picture, 64..8192
-  double disk_radius = 0;  // > 0: also draw a disk of this radius (domain units) around each point
-  double dot_radius = 0;   // > 0: dots of this radius (domain units), as stipplings draw them; 0: automatic
-  std::string title;       // drawn above the points when not empty
+  int size = 800;                 // longer side of the picture, 64..8192
+  double disk_radius = 0;         // > 0: also draw a disk of this radius (domain units) around each point
+  double dot_radius = 0;          // > 0: dots of this radius (domain units), as stipplings draw them; 0: automatic
+  std::vector<double> dot_radii;  // one a point (domain units, > 0), e.g. by class; empty: dot_radius
+  std::string title;              // drawn above the points when not empty
 };
 
 /// The points of a 2D set as dots in the domain's frame (y up).

@@ -10,6 +10,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/samplers/constraints.h"
 
 namespace pds {
 
@@ -53,6 +54,28 @@ struct EliminationParams {
 /// of them; weights out of range.
 template <int D>
 PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain, std::uint64_t seed);
+
+/// Elimination with a radius field and a mask (docs/density.md,
+/// "Elimination"). Candidates are drawn uniformly and kept with probability
+/// (rmin / r(x))^D where the mask allows, so their density follows
+/// r(x)^-D; a pair of candidates then uses d_max and d_min times the larger
+/// of their two r / rmin (the larger-of-two rule of constraints.h, applied
+/// to the weights' reach), with d_max = 2 r_max for N points in the volume
+/// weighted by (rmin / r)^D (estimated from the draws). The count is
+/// params.count, or with a field and count 0 the count whose samples
+/// typically lie r(x) apart: V' / packing_volume_per_point(rmin / 1.38, D),
+/// V' the weighted volume estimated from 65,536 uniform draws.
+/// Guarantees: exactly that many samples, each where the mask allows; same
+/// seed, same points. As without constraints, **no minimum distance** is
+/// promised: the pair rule is what the weights aim at, not a bound (the
+/// measured share of pairs closer than max(r(a), r(b)) is in
+/// docs/density.md). Invalid (InvalidArgument): fixed points; a count of 0
+/// without a field; a field whose rmin, rmax are not radii with rmin <=
+/// rmax, or that returns NaN; as elimination(). Failure: a mask so small
+/// that 64 M (rmax / rmin)^D + 10^6 draws give fewer than M candidates.
+template <int D>
+PointSet<D> elimination(const EliminationParams& params, const SamplingConstraints<D>& constraints,
+                        const Domain<D>& domain, std::uint64_t seed);
 
 /// Weighted sample elimination of a given candidate set: keeps `count` of
 /// `candidates` (their coordinates unchanged), ordered as

@@ -23,7 +23,12 @@ namespace pds {
 std::vector<double> multi_class_matrix(const std::vector<double>& radii, int dim);
 
 struct MultiClassParams {
-  std::vector<double> radii;       // the minimum distance within each class
+  std::vector<double> radii;  // the minimum distance within each class
+  /// Empty: Wei's matrix (multi_class_matrix). Otherwise k x k row-major,
+  /// symmetric, every entry a radius (kMinRadius to kMaxRadius), the
+  /// diagonal equal to `radii`: r(c, j) is the least distance between a
+  /// sample of class c and one of class j.
+  std::vector<double> matrix;
   std::uint64_t max_failures = 0;  // rejected darts in a row that close a class; 0: default_dart_failures at
                                    // the matrix's smallest entry
 };
@@ -44,8 +49,9 @@ struct MultiClassSet {
 /// Guarantees: every pair at least r(class a, class b) apart (the exact
 /// arithmetic of Domain::distance2), every point in [lo, hi), same seed same
 /// points. Near-maximal per class, not proven maximal.
-/// Invalid (InvalidArgument): as multi_class_matrix, more than 2^31 samples'
-/// worth of grid.
+/// Invalid (InvalidArgument): as multi_class_matrix, a matrix that is not
+/// k x k, not symmetric, with an entry that is not a radius or a diagonal
+/// other than the radii; more than 2^31 samples' worth of grid.
 template <int D>
 MultiClassSet<D> multi_class(const MultiClassParams& params, const Domain<D>& domain, std::uint64_t seed);
 

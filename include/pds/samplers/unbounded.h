@@ -16,10 +16,10 @@ namespace pds {
 
 struct UnboundedParams {
   double radius = 0.01;  // minimum distance between samples, > 0
-  // Expected darts thrown per grid cell (cell edge radius/sqrt(D)): the time
-  // the dart process runs for. More darts, fewer gaps, more work (the field is
-  // not maximal: docs/unbounded.md gives the uncovered fraction for each value).
-  double darts_per_cell = 8.0;
+  // Expected darts thrown per grid cell (cell edge radius/sqrt(D)) before the
+  // cells still open are refined: it changes the work, never the samples'
+  // law (the set is maximal for every value; docs/unbounded.md measures it).
+  double darts_per_cell = 2.0;
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse regions whose densest packing exceeds this
 };
 
@@ -28,37 +28,43 @@ struct UnboundedStats {
   std::size_t cells_touched = 0;  // cells whose darts were generated (region plus the reach outside it)
   std::size_t darts_settled = 0;  // darts decided (kept or rejected)
   int max_depth = 0;              // deepest chain of ever earlier darts that had to be decided
+  int max_level = 0;              // deepest refinement level generated (0: none was needed)
   int margin_cells = 0;           // farthest touched cell outside the region's cells, in cells
                                   // (on a torus: of the wrapped cells, so up to the cells per axis)
 };
 
-/// Random sequential adsorption (dart throwing) on the unbounded plane/space,
-/// defined locally so that it can be evaluated in pieces.
+/// Maximal random sequential adsorption (dart throwing run until no dart
+/// fits) on the unbounded plane/space, defined locally so that it can be
+/// evaluated in pieces.
 ///
 /// Space is cut into cells of edge radius/sqrt(D), indexed by signed 64-bit
 /// coordinates. Each cell owns a Poisson process of darts in time, rate one
-/// per cell, run until time darts_per_cell; dart j of a cell takes its time and
-/// position from a hash of (seed, cell, j). A dart is kept iff no kept dart
-/// within `radius` comes earlier in the total order (time, cell, j). Deciding
-/// a dart needs only the earlier darts within reach, recursively, with ever
-/// earlier times, so sample(region) settles the darts of the region's cells
-/// and, lazily with memoisation, exactly those outside it they depend on.
+/// per cell, until time darts_per_cell; after that, as in ebeida, the
+/// sub-cells that no kept disk covers wholly are refined level by level, each
+/// with its own stream of darts at the same rate per area, until none is open.
+/// Every dart's time and position come from a hash of (seed, cell, level,
+/// sub-cell, j). A dart is kept iff no kept dart within `radius` comes earlier
+/// in the total order (time, cell, position). Deciding a dart, or whether a
+/// sub-cell is open, needs only earlier darts nearby, recursively, so
+/// sample(region) settles the darts of the region's cells and, lazily with
+/// memoisation, exactly those outside it they depend on.
 ///
 /// Guarantees: sample(region) returns the samples of the one infinite set that
 /// lie in [lo, hi), whatever regions were asked for before or alongside (no
 /// state is kept between calls; the object is immutable and thread-safe), in
 /// lexicographic order of the coordinates; all pairs at least `radius` apart,
-/// also across any chunk seams; the same points for the same seed on every
-/// platform (portable logarithm, no libm); the law of dart throwing with
-/// darts_per_cell darts per cell. Not maximal: gaps remain where no dart fell
-/// (docs/unbounded.md measures them).
+/// also across any chunk seams; maximal (every point within `radius` of a
+/// sample, up to rounding of the coverage test), also across seams; the same
+/// points for the same seed on every platform (portable logarithm, no libm);
+/// the law of maximal dart throwing, whatever darts_per_cell.
 /// On a torus (the second constructor) the same holds with wrapped cells and
-/// distances: the set is dart throwing on that torus.
+/// distances: the set is maximal dart throwing on that torus.
 /// Invalid: a radius that is not positive and finite; darts_per_cell outside
 /// (0, 64]; a periodic or empty region; a region farther than 2^40 cells from
 /// the origin (positions would lose precision); a region whose densest
 /// packing exceeds max_points. Failure: a chain of dependent darts deeper
-/// than kMaxUnboundedDepth (not seen in testing).
+/// than kMaxUnboundedDepth, or a gap still open at kMaxUnboundedLevel (not
+/// seen in testing).
 template <int D>
 class UnboundedField {
  public:
@@ -87,6 +93,11 @@ class UnboundedField {
   std::array<double, D> edges_{};      // cell edge per axis
   std::array<std::int64_t, D> cells_{};  // cells per axis on the torus
 };
+
+/// The deepest refinement level (sub-cells of 2^-60 of a cell, far below the
+/// rounding of any coordinate): a gap still open there cannot be closed in
+/// double precision, and sample() throws Failure (not seen in testing).
+inline constexpr int kMaxUnboundedLevel = 60;
 
 /// The bound on the chain of ever earlier darts one decision may recurse
 /// through (measured depths are at most 12: docs/unbounded.md); it keeps the

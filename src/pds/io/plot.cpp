@@ -182,7 +182,7 @@ void chart(cairo_t* cr, Rect area, double x0, double x1, double y0, double y1, c
 }
 
 void points_panel(cairo_t* cr, Rect area, const PointSet<2>& points, const Domain<2>& domain, double disk_radius,
-                  double dot_radius = 0) {
+                  double dot_radius = 0, const std::vector<double>& dot_radii = {}) {
   const double scale = std::min(area.w / domain.extent(0), area.h / domain.extent(1));
   const double w = domain.extent(0) * scale, h = domain.extent(1) * scale;
   const double ox = area.x + (area.w - w) / 2, oy = area.y + (area.h - h) / 2;
@@ -203,9 +203,10 @@ void points_panel(cairo_t* cr, Rect area, const PointSet<2>& points, const Domai
   const double spacing = points.empty() ? 0.0 : std::sqrt(w * h / static_cast<double>(points.size()));
   const double dot = dot_radius > 0 ? dot_radius * scale : std::clamp(0.12 * spacing, 0.5, 4.0);
   cairo_set_source_rgb(cr, 0, 0, 0);
-  for (const auto& p : points) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& p = points[i];
     cairo_new_sub_path(cr);
-    cairo_arc(cr, px(p[0]), py(p[1]), dot, 0, 2 * M_PI);
+    cairo_arc(cr, px(p[0]), py(p[1]), dot_radii.empty() ? dot : dot_radii[i] * scale, 0, 2 * M_PI);
   }
   cairo_fill(cr);
   cairo_restore(cr);
@@ -303,8 +304,11 @@ void plot_points(const PointSet<2>& points, const Domain<2>& domain, const std::
     cairo_set_source_rgb(canvas.cr(), 0, 0, 0);
     text(canvas.cr(), options.title, margin + width / 2.0, margin + 18, 16, 0.5, 0.0, true);
   }
+  if (!options.dot_radii.empty() && options.dot_radii.size() != points.size())
+    throw InvalidArgument("point picture: " + std::to_string(options.dot_radii.size()) + " dot radii for " +
+                          std::to_string(points.size()) + " points");
   points_panel(canvas.cr(), {margin, margin + title_height, double(width), double(height)}, points, domain,
-               options.disk_radius, options.dot_radius);
+               options.disk_radius, options.dot_radius, options.dot_radii);
   canvas.finish();
 }
 

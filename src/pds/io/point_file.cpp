@@ -104,27 +104,54 @@ PointCloud read_csv(std::istream& in, const std::string& name) {
   return cloud;
 }
 
-void write_csv(std::ostream& out, const PointCloud& points) {
+std::vector<Column> coordinate_columns(int dim) {
   static const char* names[] = {"x", "y", "z", "w"};
-  for (int k = 0; k < points.dim; ++k) {
-    if (k) out << ',';
-    if (k < 4)
-      out << names[k];
-    else
-      out << 'x' << k;
+  std::vector<Column> columns;
+  for (int k = 0; k < dim; ++k) {
+    // Appended, not "x" + to_string: g++ 12 warns falsely (-Wrestrict) on the operator's inlined copy.
+    std::string name = k < 4 ? names[k] : "x";
+    if (k >= 4) name += std::to_string(k);
+    columns.push_back({name});
   }
+  return columns;
+}
+
+void write_csv(std::ostream& out, const PointCloud& points) { write_csv(out, points, coordinate_columns(points.dim)); }
+
+void write_csv(std::ostream& out, const PointCloud& table, const std::vector<Column>& columns) {
+  for (std::size_t k = 0; k < columns.size(); ++k) out << (k ? "," : "") << columns[k].name;
   out << '\n';
   char buffer[32];
   std::string line;
-  for (std::size_t i = 0; i < points.size(); ++i) {
+  for (std::size_t i = 0; i < table.size(); ++i) {
     line.clear();
-    for (int k = 0; k < points.dim; ++k) {
+    for (int k = 0; k < table.dim; ++k) {
       if (k) line += ',';
-      const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, points.point(i)[k]);
+      const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, table.point(i)[k]);
       line.append(buffer, end);
     }
     line += '\n';
     out << line;
+  }
+}
+
+void write_ply(std::ostream& out, const PointCloud& table, const std::vector<Column>& columns) {
+  out << "ply\nformat binary_little_endian 1.0\ncomment written by pds\nelement vertex " << table.size() << '\n';
+  for (const Column& c : columns) out << "property " << (c.integer ? "int " : "double ") << c.name << '\n';
+  out << "end_header\n";
+  std::string row;
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    row.clear();
+    for (int k = 0; k < table.dim; ++k) {
+      const double v = table.point(i)[k];
+      if (columns[static_cast<std::size_t>(k)].integer) {
+        const auto n = static_cast<std::int32_t>(v);
+        row.append(reinterpret_cast<const char*>(&n), sizeof n);
+      } else {
+        row.append(reinterpret_cast<const char*>(&v), sizeof v);
+      }
+    }
+    out.write(row.data(), static_cast<std::streamsize>(row.size()));
   }
 }
 
@@ -265,23 +292,41 @@ PointCloud read_points(const std::string& path) {
 std::string temporary_path(const std::string& path) { return path + ".tmp." + std::to_string(::getpid()); }
 
 void write_points(const std::string& path, const PointCloud& points, NpyType npy_type) {
+  write_table(path, points, coordinate_columns(points.dim), npy_type);
+}
+
+void write_table(const std::string& path, const PointCloud& table, const std::vector<Column>& columns,
+                 NpyType npy_type) {
+  if (columns.size() != static_cast<std::size_t>(table.dim))
+    throw InvalidArgument(path + ": " + std::to_string(columns.size()) + " column names for " +
+                          std::to_string(table.dim) + " columns");
+  for (std::size_t k = 0; k < columns.size(); ++k)
+    if (columns[k].integer)
+      for (std::size_t i = 0; i < table.size(); ++i) {
+        const double v = table.point(i)[k];
+        if (!(v == std::floor(v) && v >= -2147483648.0 && v < 2147483648.0))
+          throw InvalidArgument(path + ": column " + columns[k].name + " holds " + std::to_string(v) +
+                                ", not a 32-bit integer");
+      }
   if (path == "-") {
-    write_csv(std::cout, points);
+    write_csv(std::cout, table, columns);
     std::cout.flush();
     if (!std::cout) throw Failure("<stdout>: write error");
     return;
   }
   const std::string ext = extension_of(path);
-  if (ext != ".csv" && ext != ".npy")
-    throw InvalidArgument(path + ": unknown point file extension '" + ext + "' (use .csv or .npy)");
+  if (ext != ".csv" && ext != ".npy" && ext != ".ply")
+    throw InvalidArgument(path + ": unknown point file extension '" + ext + "' (use .csv, .npy or .ply)");
   const std::string temp = temporary_path(path);
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) throw Failure(path + ": cannot write: " + std::strerror(errno));
     if (ext == ".csv")
-      write_csv(out, points);
+      write_csv(out, table, columns);
+    else if (ext == ".ply")
+      write_ply(out, table, columns);
     else
-      write_npy(out, points, npy_type);
+      write_npy(out, table, npy_type);
     out.flush();
     if (!out) {
       std::remove(temp.c_str());

@@ -1,10 +1,11 @@
 // Registry entries of the fast and maximal Poisson disk methods that need
-// no third-party library: Dunbar & Humphreys, Wei, Ebeida.
+// no third-party library: Dunbar & Humphreys, Wei, Ebeida, maximal darts.
 #include <algorithm>
 
 #include "descriptors.h"
 #include "pds/samplers/dunbar_humphreys.h"
 #include "pds/samplers/ebeida.h"
+#include "pds/samplers/maximal_darts.h"
 #include "pds/samplers/wei.h"
 
 namespace pds::registry_detail {
@@ -114,7 +115,39 @@ const Method& ebeida_method() {
       .run =
           [](const GenerateRequest& r) {
             const EbeidaParams params{*r.radius, r.max_points};
-            return run_typed<kMinDim, kEbeidaWeiMaxDim>(r, [&](const auto& domain) { return ebeida(params, domain, r.seed); });
+            return run_typed<kMinDim, kEbeidaWeiMaxDim>(
+                r, [&](const auto& domain) { return ebeida(params, domain, r.seed); });
+          },
+  };
+  return method;
+}
+
+const Method& maximal_darts_method() {
+  static const Method method{
+      .name = "maximal-darts",
+      .family = Family::maximal_poisson_disk,
+      .docs = "docs/maximal-darts.md",
+      .summary =
+          "maximal Poisson disk, fastest with dart throwing's statistics (Ebeida et al.'s grid, darts at Poisson "
+          "times decided window by window; parallel, same output for any thread count), --radius",
+      .citation =
+          "M. S. Ebeida, S. A. Mitchell, A. Patney, A. A. Davidson, J. D. Owens, A simple algorithm for maximal "
+          "Poisson-disk sampling in high dimensions, Computer Graphics Forum 31(2), 2012",
+      .takes_radius = true,
+      .min_distance = true,
+      .maximal = true,
+      .compare = true,
+      // The same process as ebeida (maximal dart throwing), so the same bands.
+      .dims = {2, 3},
+      .rho = {{2, false, 0.02, 0.76, 0.81},
+              {2, true, 0.02, 0.755, 0.80},
+              {3, false, 0.08, 0.82, 0.87},
+              {3, true, 0.08, 0.78, 0.83}},
+      .memory_ratio = 3,
+      .run =
+          [](const GenerateRequest& r) {
+            const MaximalDartsParams params{*r.radius, r.threads, r.max_points};
+            return run_typed<2, 3>(r, [&](const auto& domain) { return maximal_darts(params, domain, r.seed); });
           },
   };
   return method;

@@ -39,7 +39,7 @@ auto with_shrinking_radius(double& radius, Sample&& sample) {
 // `sample(params)` and `constrained(params)` call the sampler.
 template <class Params, int D, class Sample, class Constrained>
 PointSet<D> run_radius_method(const GenerateRequest& r, const Domain<D>& domain, Params& params, double rho,
-                             Sample&& sample, Constrained&& constrained) {
+                              Sample&& sample, Constrained&& constrained) {
   if (r.constraints.active()) {
     params.radius = r.radius.value_or(0.0);
     return constrained(params);
@@ -205,6 +205,7 @@ const Method& elimination_method() {
       .takes_count = true,
       .exact_count = true,
       .progressive = true,
+      .constraints = true,
       // 1 to 3: from 4D on, prefixes are less even than the progressive
       // conformance test asks (index of dispersion 0.60-0.79 in 4D-8D,
       // against below 0.6); the sampler itself takes every dimension.
@@ -219,7 +220,8 @@ const Method& elimination_method() {
           [](const GenerateRequest& r) {
             return run_typed<1, 3>(r, [&](const auto& domain) {
               EliminationParams params;
-              params.count = *r.count;
+              // With a radius field and no count, the field sizes the set.
+              params.count = r.count ? *r.count : 0;
               params.candidates = r.param("candidates", 5);
               params.progressive = r.param("progressive", 1) != 0;
               params.weights.alpha = r.param("alpha", 8);
@@ -228,6 +230,7 @@ const Method& elimination_method() {
               // The candidates, not the output, are what takes the memory.
               require_point_budget(std::ceil(params.candidates * static_cast<double>(params.count)), r.dim,
                                    std::numeric_limits<std::uint64_t>::max(), "elimination's candidates");
+              if (r.constraints.active()) return elimination(params, r.constraints.typed(domain), domain, r.seed);
               return elimination(params, domain, r.seed);
             });
           },

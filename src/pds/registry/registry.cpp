@@ -33,6 +33,7 @@ std::span<const Method> methods() {
       jones_method(),
 #endif
       ebeida_method(),
+      maximal_darts_method(),
 #ifdef PDS_WITH_CGAL
       fpo_method(),
 #endif
@@ -102,10 +103,30 @@ double GenerateRequest::param(const std::string& name, double fallback) const {
   return it == params.end() ? fallback : it->second;
 }
 
+void validate_params(const Method& m, const std::map<std::string, double>& params) {
+  for (const auto& entry : params) {
+    const std::string& name = entry.first;
+    const double value = entry.second;
+    const auto it =
+        std::find_if(m.params.begin(), m.params.end(), [&](const MethodParam& p) { return p.name == name; });
+    if (it == m.params.end()) {
+      std::string known;
+      for (const MethodParam& p : m.params) known += (known.empty() ? "" : ", ") + p.name;
+      throw InvalidArgument(m.name + " has no parameter '" + name + "' (" +
+                            (known.empty() ? std::string("it takes none") : "known: " + known) + ")");
+    }
+    if (!std::isfinite(value) || value < it->min || value > it->max || (it->integer && value != std::floor(value)))
+      throw InvalidArgument(m.name + ": parameter " + name + " must be " + (it->integer ? "an integer " : "") + "in [" +
+                            detail::format_number(it->min) + ", " + detail::format_number(it->max) + "], got " +
+                            detail::format_number(value));
+  }
+}
+
 namespace {
 
 // A radius field, a mask, fixed points: only where the method takes them,
-// and sized by the field's range or a radius, never by a count.
+// and sized by the field's range or a radius, never by a count (except for
+// a method that takes only a count: elimination).
 void validate_constraints(const Method& m, const GenerateRequest& r) {
   const RequestConstraints& c = r.constraints;
   if (!c.active()) return;
@@ -118,7 +139,7 @@ void validate_constraints(const Method& m, const GenerateRequest& r) {
   if (c.fixed.size() > 0 && c.fixed.dim != r.dim)
     throw InvalidArgument("fixed points have dimension " + std::to_string(c.fixed.dim) + ", the request " +
                           std::to_string(r.dim));
-  if (r.count)
+  if (r.count && m.takes_radius)
     throw InvalidArgument(m.name +
                           ": --count is not taken with a density, a mask or fixed points (size by the radius)");
   // Rounding would move the fixed points and could break the pair rule.
@@ -140,8 +161,8 @@ void validate_constraints(const Method& m, const GenerateRequest& r) {
 
 void validate(const Method& m, const GenerateRequest& r) {
   if (!m.dims.contains(r.dim))
-    throw InvalidArgument(m.name + ": dimension " + std::to_string(r.dim) + " is not supported (supported: " +
-                          m.dims.text() + ")");
+    throw InvalidArgument(m.name + ": dimension " + std::to_string(r.dim) +
+                          " is not supported (supported: " + m.dims.text() + ")");
   validate_constraints(m, r);
   if (r.dim > kMaxDim) {
     // Run-time dimensions: sequences and designs, which take a count only.
@@ -195,22 +216,7 @@ void validate(const Method& m, const GenerateRequest& r) {
                             " MiB at its peak, above the budget of " + detail::format_number(r.max_memory / (1 << 20)) +
                             " MiB (--max-memory)");
   }
-  for (const auto& entry : r.params) {
-    const std::string& name = entry.first;
-    const double value = entry.second;
-    const auto it =
-        std::find_if(m.params.begin(), m.params.end(), [&](const MethodParam& p) { return p.name == name; });
-    if (it == m.params.end()) {
-      std::string known;
-      for (const MethodParam& p : m.params) known += (known.empty() ? "" : ", ") + p.name;
-      throw InvalidArgument(m.name + " has no parameter '" + name + "' (" +
-                            (known.empty() ? std::string("it takes none") : "known: " + known) + ")");
-    }
-    if (!std::isfinite(value) || value < it->min || value > it->max || (it->integer && value != std::floor(value)))
-      throw InvalidArgument(m.name + ": parameter " + name + " must be " + (it->integer ? "an integer " : "") + "in [" +
-                            detail::format_number(it->min) + ", " + detail::format_number(it->max) + "], got " +
-                            detail::format_number(value));
-  }
+  validate_params(m, r.params);
 }
 
 // Runs the method so that its output, rounded to float32, keeps the

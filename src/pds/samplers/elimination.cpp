@@ -45,12 +45,14 @@
 #include <sstream>
 #include <string>
 
+#include "elimination_detail.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/detail/format.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/grid.h"
 #include "pds/grid_neighbourhood.h"
+#include "pds/limits.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 
@@ -58,6 +60,9 @@ namespace pds {
 namespace {
 
 constexpr std::size_t kMaxCandidates = std::size_t{1} << 31;
+// Elimination's typical relative radius from 5N candidates (2D 0.69, 3D
+// 0.68; docs/elimination.md): a radius field sizes the count by it.
+constexpr double kTypicalRho = 0.69;
 
 // The paper's weight of a neighbour at squared distance d2 < d_max^2.
 class WeightFunction {
@@ -67,7 +72,18 @@ class WeightFunction {
 
   [[gnu::always_inline]] double operator()(double d2) const {
     const double d = std::max(std::sqrt(d2), d_min_);
-    const double x = std::max(0.0, 1.0 - d * inv_d_max_);
+    return power(std::max(0.0, 1.0 - d * inv_d_max_));
+  }
+
+  /// The weight of a pair whose d_max and d_min are scaled by `scale` (the
+  /// larger of the two samples' scales).
+  [[gnu::always_inline]] double operator()(double d2, double scale) const {
+    const double d = std::max(std::sqrt(d2), d_min_ * scale);
+    return power(std::max(0.0, 1.0 - d * inv_d_max_ / scale));
+  }
+
+ private:
+  [[gnu::always_inline]] double power(double x) const {
     if (alpha8_) {
       const double x2 = x * x, x4 = x2 * x2;
       return x4 * x4;
@@ -75,7 +91,6 @@ class WeightFunction {
     return std::pow(x, alpha_);
   }
 
- private:
   double inv_d_max_, d_min_, alpha_;
   bool alpha8_;
 };
@@ -234,16 +249,32 @@ class WeightHeap {
 
 // One round: eliminates `points` down to `keep`. Returns indices into
 // `points`: the survivors first (in input order), then the eliminated, the
-// last eliminated first.
-template <int D>
-std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::size_t keep, const Domain<D>& domain,
-                                           double d_max, const WeightFunction& weight) {
-  const CellIndex<D> index(domain, points, d_max);
+// last eliminated first. `scale` is empty (one d_max for all) or one factor
+// a point: a pair's d_max and d_min grow by the larger of its two factors.
+template <int D, bool Scaled>
+std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::span<const double> scale,
+                                           std::size_t keep, const Domain<D>& domain, double d_max,
+                                           const WeightFunction& weight) {
+  const double largest = Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0;
+  const CellIndex<D> index(domain, points, d_max * largest);
   const std::size_t n = index.size();
+  std::vector<double> sorted_scale;
+  if constexpr (Scaled) {
+    sorted_scale.resize(n);
+    for (std::uint32_t k = 0; k < n; ++k) sorted_scale[k] = scale[index.original(k)];
+  }
+  // The weight of the pair (self, k) at squared distance d2; zero beyond the
+  // pair's own d_max.
+  auto pair_weight = [&](std::uint32_t self, std::uint32_t k, double d2) {
+    if constexpr (Scaled)
+      return weight(d2, std::max(sorted_scale[self], sorted_scale[k]));
+    else
+      return weight(d2);
+  };
   std::vector<double> weights(n, 0.0);
   for (std::uint32_t k = 0; k < n; ++k) {
     double sum = 0.0;
-    index.for_each_near(k, [&](std::uint32_t, double d2) { sum += weight(d2); });
+    index.for_each_near(k, [&](std::uint32_t j, double d2) { sum += pair_weight(j, k, d2); });
     weights[k] = sum;
   }
   WeightHeap heap(weights);
@@ -255,7 +286,7 @@ std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std
     // The pair's weight is evaluated from the neighbour's side, as when it
     // was added (distance2 is symmetric, so the terms cancel exactly anyway).
     index.for_each_near(gone, [&](std::uint32_t k, double d2) {
-      if (heap.contains(k)) heap.decrease(k, weight(d2));
+      if (heap.contains(k)) heap.decrease(k, pair_weight(gone, k, d2));
     });
   }
   std::vector<std::uint32_t> order;
@@ -269,6 +300,14 @@ std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std
   return order;
 }
 
+template <int D>
+std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::span<const double> scale,
+                                           std::size_t keep, const Domain<D>& domain, double d_max,
+                                           const WeightFunction& weight) {
+  return scale.empty() ? eliminate_round<D, false>(points, scale, keep, domain, d_max, weight)
+                       : eliminate_round<D, true>(points, scale, keep, domain, d_max, weight);
+}
+
 void validate(const EliminationWeights& w) {
   if (!(w.alpha > 0.0) || !std::isfinite(w.alpha))
     throw InvalidArgument("elimination: alpha must be positive and finite, got " + detail::format_number(w.alpha));
@@ -279,6 +318,41 @@ void validate(const EliminationWeights& w) {
 }
 
 }  // namespace
+
+namespace detail {
+
+template <int D>
+std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, std::span<const double> scale,
+                                             std::size_t count, const Domain<D>& domain, double d_max,
+                                             const EliminationWeights& weights, bool progressive, int growth_dim) {
+  const double ratio = static_cast<double>(count) / static_cast<double>(points.size());
+  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
+  const WeightFunction first(d_max, d_min, weights.alpha);
+  std::vector<std::uint32_t> kept = eliminate_round<D>(points, scale, count, domain, d_max, first);
+  kept.resize(count);
+  if (!progressive) return kept;
+  PointSet<D> out(count);
+  std::vector<double> out_scale(scale.empty() ? 0 : count);
+  std::vector<std::uint32_t> round(count);
+  for (std::size_t size = count; size >= 2; size /= 2) {
+    for (std::size_t i = 0; i < size; ++i) {
+      out[i] = points[kept[i]];
+      if (!scale.empty()) out_scale[i] = scale[kept[i]];
+    }
+    d_max *= std::pow(2.0, 1.0 / growth_dim);
+    const WeightFunction weight(d_max, d_min, weights.alpha);
+    const std::vector<std::uint32_t> order = eliminate_round<D>(
+        std::span<const Point<D>>(out.data(), size),
+        std::span<const double>(out_scale.data(), scale.empty() ? 0 : size), size / 2, domain, d_max, weight);
+    for (std::size_t i = 0; i < size; ++i) round[i] = kept[order[i]];
+    std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), kept.begin());
+  }
+  return kept;
+}
+
+void validate_elimination_weights(const EliminationWeights& weights) { validate(weights); }
+
+}  // namespace detail
 
 template <int D>
 PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const Domain<D>& domain,
@@ -298,23 +372,11 @@ PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const 
       throw InvalidArgument(os.str());
     }
   const std::size_t n = static_cast<std::size_t>(count);
-  double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
-  const double ratio = static_cast<double>(n) / static_cast<double>(candidates.size());
-  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
-  const WeightFunction first(d_max, d_min, weights.alpha);
-  const std::vector<std::uint32_t> kept = eliminate_round<D>(candidates, n, domain, d_max, first);
+  const double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
+  const std::vector<std::uint32_t> kept =
+      detail::eliminate_indices<D>(candidates, {}, n, domain, d_max, weights, progressive, D);
   PointSet<D> out(n);
   for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
-  if (!progressive) return out;
-  PointSet<D> round(n);
-  for (std::size_t size = n; size >= 2; size /= 2) {
-    d_max *= std::pow(2.0, 1.0 / D);
-    const WeightFunction weight(d_max, d_min, weights.alpha);
-    const std::vector<std::uint32_t> order =
-        eliminate_round<D>(std::span<const Point<D>>(out.data(), size), size / 2, domain, d_max, weight);
-    for (std::size_t i = 0; i < size; ++i) round[i] = out[order[i]];
-    std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), out.begin());
-  }
   return out;
 }
 
@@ -335,9 +397,88 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   return eliminate(candidates, params.count, domain, params.weights, params.progressive);
 }
 
-#define PDS_INSTANTIATE(D)                                                                                          \
-  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                   \
-  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, \
+template <int D>
+PointSet<D> elimination(const EliminationParams& params, const SamplingConstraints<D>& constraints,
+                        const Domain<D>& domain, std::uint64_t seed) {
+  if (!constraints.fixed.empty())
+    throw InvalidArgument("elimination: fixed points are not taken (bridson and dart-throwing keep them)");
+  if (!constraints.active()) return elimination(params, domain, seed);
+  domain.validate();
+  validate(params.weights);
+  if (!(params.candidates >= 1.0) || !std::isfinite(params.candidates))
+    throw InvalidArgument("elimination: candidates must be a factor of at least 1, got " +
+                          detail::format_number(params.candidates));
+  const bool field = static_cast<bool>(constraints.radius);
+  const double rmin = constraints.rmin, rmax = constraints.rmax;
+  if (field) {
+    require_radius(rmin, "rmin");
+    require_radius(rmax, "rmax");
+    if (!(rmin <= rmax))
+      throw InvalidArgument("elimination: the radius range needs rmin <= rmax, got " + detail::format_number(rmin) +
+                            " > " + detail::format_number(rmax));
+  }
+  // The weight of a point: 0 outside the mask, else (rmin / r(x))^D in (0, 1].
+  auto weight_at = [&](const Point<D>& p) {
+    if (constraints.inside && !constraints.inside(p)) return 0.0;
+    if (!field) return 1.0;
+    const double r = constraints.radius(p);
+    if (std::isnan(r)) throw InvalidArgument("elimination: the radius field returned NaN");
+    return std::pow(rmin / std::clamp(r, rmin, rmax), D);
+  };
+  std::uint64_t count = params.count;
+  if (count == 0) {
+    if (!field) throw InvalidArgument("elimination: count must be at least 1, got 0");
+    // The weighted volume from a pilot of uniform draws (a stream of its own).
+    constexpr int kPilot = 65536;
+    Rng pilot(seed, {1});
+    double sum = 0.0;
+    for (int i = 0; i < kPilot; ++i) sum += weight_at(uniform_point(pilot, domain));
+    if (sum == 0.0) throw InvalidArgument("elimination: the mask leaves no room in the domain");
+    const double volume = domain.volume() * sum / kPilot;
+    count = static_cast<std::uint64_t>(
+        std::max(1.0, std::round(volume / packing_volume_per_point(rmin / (2.0 * kTypicalRho), D))));
+  }
+  const double m_real = std::ceil(params.candidates * static_cast<double>(count));
+  if (m_real > static_cast<double>(kMaxCandidates))
+    throw InvalidArgument("elimination: " + detail::format_number(m_real) + " candidates, more than 2^31");
+  const auto m = static_cast<std::size_t>(m_real);
+  const double bound = 64.0 * m_real * (field ? std::pow(rmax / rmin, D) : 1.0) + 1e6;
+  Rng rng(seed);
+  PointSet<D> candidates;
+  candidates.reserve(m);
+  std::vector<double> scale;
+  if (field) scale.reserve(m);
+  double draws = 0.0;
+  while (candidates.size() < m) {
+    if (++draws > bound)
+      throw Failure("elimination: " + detail::format_number(bound) + " draws gave " +
+                    std::to_string(candidates.size()) + " of " + std::to_string(m) +
+                    " candidates (the mask leaves too little room)");
+    const Point<D> p = uniform_point(rng, domain);
+    const double w = weight_at(p);
+    if (w > 0.0 && (w >= 1.0 || rng.uniform() < w)) {
+      candidates.push_back(p);
+      if (field) scale.push_back(std::pow(w, -1.0 / D));
+    }
+  }
+  const double volume = domain.volume() * static_cast<double>(m) / draws;
+  const auto n = static_cast<std::size_t>(count);
+  const double d_max = 2.0 * max_packing_radius(volume, n, D);
+  const std::vector<std::uint32_t> kept =
+      detail::eliminate_indices<D>(candidates, scale, n, domain, d_max, params.weights, params.progressive, D);
+  PointSet<D> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
+  return out;
+}
+
+#define PDS_INSTANTIATE(D)                                                                                             \
+  template PointSet<D> elimination<D>(const EliminationParams&, const SamplingConstraints<D>&, const Domain<D>&,       \
+                                      std::uint64_t);                                                                  \
+  template std::vector<std::uint32_t> detail::eliminate_indices<D>(std::span<const Point<D>>, std::span<const double>, \
+                                                                   std::size_t, const Domain<D>&, double,              \
+                                                                   const EliminationWeights&, bool, int);              \
+  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                      \
+  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&,    \
                                     bool);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numbers>
 #include <set>
 
 #include "pds/analysis/distance.h"
@@ -159,6 +160,73 @@ TEST(Elimination, ThroughTheRegistry) {
   EXPECT_EQ(generate("elimination", r).size(), 500u);
   r.radius = 0.01;
   EXPECT_THROW(generate("elimination", r), InvalidArgument);
+}
+
+// A radius field: r rises linearly in x from 0.01 to 0.04 on the unit torus.
+SamplingConstraints<2> rising_field() {
+  SamplingConstraints<2> c;
+  c.radius = [](const Point<2>& x) { return 0.01 * (1.0 + 3.0 * x[0]); };
+  c.rmin = 0.01;
+  c.rmax = 0.04;
+  return c;
+}
+
+TEST(Elimination, RadiusFieldSetsTheLocalDensity) {
+  const auto torus = Domain<2>::unit(true);
+  const SamplingConstraints<2> field = rising_field();
+  // A count: exact, the field giving the relative spacing.
+  const PointSet<2> counted = elimination<2>({.count = 2000, .progressive = false}, field, torus, 7);
+  ASSERT_EQ(counted.size(), 2000u);
+  EXPECT_EQ(counted, elimination<2>({.count = 2000, .progressive = false}, field, torus, 7));
+  // Without a count the field sizes the set: the weighted area, the
+  // integral of (rmin / r)^2 = (1 + 3x)^-2, is 0.25; each sample takes
+  // 2 sqrt(3) (rmin / 1.38)^2 of it (about 1374 samples).
+  const PointSet<2> a = elimination<2>({.count = 0}, field, torus, 8);
+  const double expected = 0.25 / (2.0 * std::sqrt(3.0) * std::pow(0.01 / 1.38, 2.0));
+  EXPECT_NEAR(static_cast<double>(a.size()), expected, 0.03 * expected);
+  // The density follows r^-2: the integral of (1 + 3x)^-2 is 0.2 over
+  // [0, 0.5] and 0.05 over [0.5, 1], so 80% of the samples lie left.
+  for (const PointSet<2>* set : {&counted, &a}) {
+    const auto left = std::count_if(set->begin(), set->end(), [](const Point<2>& p) { return p[0] < 0.5; });
+    EXPECT_NEAR(static_cast<double>(left) / static_cast<double>(set->size()), 0.8, 0.025);
+  }
+  // The larger-of-two rule, as the weights aim at it (no bound is
+  // promised): the closest pair relative to the larger of its two radii,
+  // in the set the field sized. White noise would be near 0.
+  double worst = INFINITY;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      const double r = std::max(field.radius(a[i]), field.radius(a[j]));
+      worst = std::min(worst, std::sqrt(torus.distance2(a[i], a[j])) / r);
+    }
+  // Measured 0.996 with seed 8 (1,376 samples, 81.2% on the left).
+  EXPECT_GT(worst, 0.85) << worst;
+}
+
+TEST(Elimination, MaskIsRespectedAndCountExact) {
+  const auto box = Domain<2>::unit();
+  SamplingConstraints<2> disc;
+  disc.inside = [](const Point<2>& x) { return (x[0] - 0.5) * (x[0] - 0.5) + (x[1] - 0.5) * (x[1] - 0.5) < 0.09; };
+  const PointSet<2> a = elimination<2>({.count = 700}, disc, box, 2);
+  ASSERT_EQ(a.size(), 700u);
+  for (const auto& p : a) ASSERT_TRUE(disc.inside(p));
+  // Spread over the disc as a uniform set over its area: rho ~0.69.
+  const double d = min_distance(a, box).distance;
+  EXPECT_GT(relative_radius(d, 0.09 * std::numbers::pi, a.size(), 2), 0.55);
+  // Refused: fixed points, a mask without a count, a bad range, NaN.
+  SamplingConstraints<2> fixed;
+  fixed.fixed = {{0.5, 0.5}};
+  EXPECT_THROW(elimination<2>({.count = 10}, fixed, box, 1), InvalidArgument);
+  EXPECT_THROW(elimination<2>({.count = 0}, disc, box, 1), InvalidArgument);
+  SamplingConstraints<2> bad = rising_field();
+  bad.rmin = 0.05;
+  EXPECT_THROW(elimination<2>({.count = 10}, bad, box, 1), InvalidArgument);
+  bad = rising_field();
+  bad.radius = [](const Point<2>&) { return std::nan(""); };
+  EXPECT_THROW(elimination<2>({.count = 10}, bad, box, 1), InvalidArgument);
+  SamplingConstraints<2> nowhere;
+  nowhere.inside = [](const Point<2>&) { return false; };
+  EXPECT_THROW(elimination<2>({.count = 10}, nowhere, box, 1), Failure);
 }
 
 }  // namespace

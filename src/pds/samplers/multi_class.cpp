@@ -6,7 +6,7 @@
 // domain, each for the open class with the lowest fill rate; a dart of class
 // c is kept when no sample q of class j lies closer than r(c, j). The
 // neighbours are found in one pds::Grid for the smallest matrix entry,
-// searched out to r(c, c), the largest entry of row c.
+// searched out to the largest entry of row c (r(c, c) for Wei's matrix).
 //
 // Guarantees: see multi_class.h. Complexity: a dart reads the cells within
 // r_c; with radii far apart the sparse classes read many small cells.
@@ -51,11 +51,38 @@ std::vector<double> multi_class_matrix(const std::vector<double>& radii, int dim
   return m;
 }
 
+namespace {
+
+std::vector<double> checked_matrix(const std::vector<double>& radii, const std::vector<double>& m) {
+  if (radii.empty()) throw InvalidArgument("multi-class: need at least one class");
+  const std::size_t k = radii.size();
+  if (m.size() != k * k)
+    throw InvalidArgument("multi-class: the radius matrix has " + std::to_string(m.size()) + " entries; " +
+                          std::to_string(k) + " classes need " + std::to_string(k * k));
+  for (const double r : m) require_radius(r, "class matrix entry");
+  for (std::size_t c = 0; c < k; ++c) {
+    if (m[c * k + c] != radii[c])
+      throw InvalidArgument("multi-class: the matrix's diagonal entry " + std::to_string(c) + " is " +
+                            detail::format_number(m[c * k + c]) + ", not the class radius " +
+                            detail::format_number(radii[c]));
+    for (std::size_t j = c + 1; j < k; ++j)
+      if (m[c * k + j] != m[j * k + c])
+        throw InvalidArgument("multi-class: the radius matrix is not symmetric (entries " + std::to_string(c) + "," +
+                              std::to_string(j) + " and " + std::to_string(j) + "," + std::to_string(c) + ")");
+  }
+  return m;
+}
+
+}  // namespace
+
 template <int D>
 MultiClassSet<D> multi_class(const MultiClassParams& params, const Domain<D>& domain, std::uint64_t seed) {
   domain.validate();
-  const std::vector<double> m = multi_class_matrix(params.radii, D);
+  const std::vector<double> m =
+      params.matrix.empty() ? multi_class_matrix(params.radii, D) : checked_matrix(params.radii, params.matrix);
   const std::size_t k = params.radii.size();
+  std::vector<double> reach(k, 0.0);  // the largest entry of each row
+  for (std::size_t c = 0; c < k; ++c) reach[c] = *std::max_element(m.begin() + c * k, m.begin() + (c + 1) * k);
   const double smallest = *std::min_element(m.begin(), m.end());
   const std::uint64_t bound = params.max_failures ? params.max_failures : default_dart_failures(domain, smallest);
   Grid<D> grid = Grid<D>::for_conflicts(domain, smallest);
@@ -73,7 +100,7 @@ MultiClassSet<D> multi_class(const MultiClassParams& params, const Domain<D>& do
         c = i;
     const Point<D> dart = uniform_point(rng, domain);
     const double* row = m.data() + c * k;
-    const bool free = grid.for_each_within(dart, row[c], [&](std::int32_t q, double d2) {
+    const bool free = grid.for_each_within(dart, reach[c], [&](std::int32_t q, double d2) {
       const double r = row[out.classes[static_cast<std::size_t>(q)]];
       return !(d2 < r * r);
     });

@@ -56,6 +56,36 @@ TEST(MultiClass, EveryPairKeepsItsClassesRadius) {
   }
 }
 
+TEST(MultiClass, AGivenMatrixIsHonouredAndChecked) {
+  // Cross distance 0.05, larger than both radii: the classes keep farther
+  // apart from each other than within themselves.
+  const Domain<2> domain = Domain<2>::unit(true);
+  MultiClassParams params;
+  params.radii = {0.02, 0.03};
+  params.matrix = {0.02, 0.05, 0.05, 0.03};
+  const MultiClassSet<2> set = multi_class(params, domain, 5);
+  std::size_t bad = 0;
+  double closest_cross = INFINITY;
+  for (std::size_t i = 0; i < set.points.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j) {
+      const double r = params.matrix[set.classes[i] * 2 + set.classes[j]];
+      const double d2 = domain.distance2(set.points[i], set.points[j]);
+      bad += d2 < r * r;
+      if (set.classes[i] != set.classes[j]) closest_cross = std::min(closest_cross, std::sqrt(d2));
+    }
+  EXPECT_EQ(bad, 0u);
+  EXPECT_GE(closest_cross, 0.05);
+  EXPECT_GT(set.points.size(), 300u);
+  params.matrix = {0.02, 0.05, 0.04, 0.03};  // not symmetric
+  EXPECT_THROW(multi_class(params, domain, 1), InvalidArgument);
+  params.matrix = {0.02, 0.05, 0.05};  // not 2 x 2
+  EXPECT_THROW(multi_class(params, domain, 1), InvalidArgument);
+  params.matrix = {0.025, 0.05, 0.05, 0.03};  // diagonal not the radii
+  EXPECT_THROW(multi_class(params, domain, 1), InvalidArgument);
+  params.matrix = {0.02, 0.0, 0.0, 0.03};  // not a radius
+  EXPECT_THROW(multi_class(params, domain, 1), InvalidArgument);
+}
+
 // Blue noise: each class alone and the union have little power at low
 // frequencies (white noise has 1 everywhere), averaged over a few sets. The
 // union's band reaches higher: a union of classes placed independently keeps

@@ -1,41 +1,54 @@
 // The unbounded, chunk-invariant Poisson disk field (docs/unbounded.md).
 //
-// Random sequential adsorption in continuous time: every cell of edge
-// r/sqrt(D) owns a Poisson process of darts (rate one per cell, until time T =
-// darts_per_cell), and a dart is kept iff no kept dart within r is earlier in
-// the total order (time, cell, j). This is ebeida's level 0 (docs/ebeida.md,
-// "darts in time order") without the domain: the union of the cells' streams
-// is one Poisson process in space-time, so in time order it is sequential
-// dart throwing with uniform darts, on the whole plane at once.
+// Maximal random sequential adsorption in continuous time. Level 0 is
+// ebeida's first level without a domain (docs/ebeida.md, "darts in time
+// order"): every cell of edge r/sqrt(D) owns a Poisson process of darts
+// (rate one per cell, until time T = darts_per_cell), and a dart is kept iff
+// no kept dart within r is earlier in the total order (time, cell, position).
+// Then, as ebeida refines: at level k >= 1 (time [T_k-1, T_k), T_k = T_k-1 +
+// kSubDarts 2^kD) each sub-cell of edge 2^-k that is the child of an open
+// sub-cell of level k - 1 and that no disk of a sample kept before T_k-1
+// covers wholly is open, and owns a Poisson stream of darts of rate 2^-kD
+// (one per cell's area, kSubDarts per sub-cell and level). A covered
+// sub-cell's darts would all be rejected, so leaving them out changes no
+// decision: the union of the streams is the space-time Poisson process with
+// the never-kept darts removed, and in time order this is sequential dart
+// throwing with uniform darts run to saturation. When no sub-cell of a cell
+// is open, every point of it is within r of a sample: maximal.
 //
 // Why a region can be computed alone, exactly: a dart's fate is a function of
-// the earlier darts within r and their fates, recursively. Every step of that
-// recursion goes to a strictly earlier dart, and there are finitely many darts
-// before time T within any bounded distance, so the recursion ends; the set
-// of darts it visits is determined by the seed and the dart, not by the region
-// that asked. sample() therefore decides the darts of the region's cells in
-// any order, and those outside that they depend on lazily (memoised for the
-// call: an array of cells around the region, a hash map beyond), and returns
-// exactly the kept darts in the region. No truncation, no margin guessed: the
-// reach outside the region is whatever the recursion needs, and
-// UnboundedStats::margin_cells reports it.
+// the earlier darts within r and their fates, and a sub-cell's openness a
+// function of the darts kept before its level starts within r of its parent;
+// each step of that recursion goes to strictly earlier darts or to a lower
+// level, and finitely many darts and sub-cells lie below a time within any
+// bounded distance, so it ends. What it visits is determined by the seed and
+// the dart, not by the region that asked. sample() therefore decides the
+// darts of the region's cells in any order, and those outside that they
+// depend on lazily (memoised for the call: an array of cells around the
+// region, a hash map beyond), each cell's tree of open sub-cells grown only
+// where a question reaches. No truncation, no margin guessed:
+// UnboundedStats::margin_cells reports the reach.
+//
+// Why it ends: a gap (a connected part of the plane not within r of a
+// sample) has positive area; each level throws darts at it with the same
+// rate per area, and the first one in it is kept. Once no gap is left, every
+// point is inside some disk (points on three circles at once have
+// probability zero), so by compactness sub-cells small enough are each inside
+// one disk: a finite number of levels, measured 10 to 20 at 10^5 samples.
+// kMaxUnboundedLevel (60, sub-cells far below the rounding of coordinates)
+// bounds it with a Failure, as kMaxUnboundedDepth bounds the recursion.
 //
 // Reach and depth: the earlier darts within r are tried earliest first, and
-// the first kept one rejects the dart; an early dart has few darts before it,
-// so the recursion seldom travels far. Cells inside the region are swept in
-// time windows of 1/2 (as ebeida does), so the darts a decision recurses into
-// are mostly decided already: within one window about 3 darts (2D; 11 in 3D)
-// fall within r of a dart, a sparse graph whose decreasing-time paths are
-// short. Cells outside the region are decided on demand from time 0. Measured
-// depth at most 11 in 2D and 12 in 3D, reach 6 to 12 cells (docs/unbounded.md);
-// kMaxUnboundedDepth bounds the depth with a clear error long before the
-// stack (a frame is a few hundred bytes) could overflow.
+// the first kept one rejects the dart; cells inside the region are swept in
+// time windows of 1/2 at level 0 and then level by level, and a cell whose
+// darts are all decided up to a time answers from its list of kept darts.
 //
 // On a torus the cells' coordinates wrap modulo the cells per axis (at least
 // 5, so the 5^D block of neighbours holds distinct cells) and distances wrap.
 //
-// Determinism: dart j of cell c has its bits from mix64 of (seed, c, j) and
-// its waiting time from the portable logarithm (pds/portable_math.h).
+// Determinism: dart j of sub-cell s of cell c at level k has its bits from
+// mix64 of (seed, c, k, s, j) and its waiting time from the portable
+// logarithm (pds/portable_math.h).
 
 #include "pds/samplers/unbounded.h"
 
@@ -44,6 +57,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <deque>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -81,12 +95,39 @@ struct Dart {
   double t;
 };
 
+/// A sub-cell of a cell at refinement level k: its index along each axis, in
+/// [0, 2^k).
+template <int D>
+using Sub = std::array<std::uint64_t, D>;
+
+constexpr std::uint8_t kNotExpanded = 0, kExpanding = 1, kExpanded = 2;
+
+/// An open sub-cell (level >= 1), or the cell itself (level 0, the root): a
+/// node of the cell's quadtree (octree), grown lazily where it is needed.
+template <int D>
+struct Node {
+  Sub<D> sub{};
+  std::uint32_t first_dart = 0, darts = 0;      // its darts: CellState::darts[first_dart, + darts)
+  std::uint32_t first_child = 0, children = 0;  // its open children: CellState::nodes[first_child, + children)
+  std::uint8_t level = 0;
+  std::uint8_t expanded = kNotExpanded;  // kNotExpanded, kExpanding or kExpanded
+};
+
+constexpr std::uint32_t kRoot = UINT32_MAX;
+constexpr std::int8_t kClosed = INT8_MAX;  // CellState::done: no sub-cell open, no dart will ever come
+
 template <int D>
 struct CellState {
-  std::vector<Dart<D>> darts;        // in time order, all before time T
+  std::vector<Dart<D>> darts;        // the level-0 darts in time order, then each node's, each in time order
   std::vector<std::uint8_t> status;  // per dart: kUndecided, kKept or kRejected
-  std::uint32_t swept = 0;           // darts[0, swept) decided by the sweep
+  Node<D> root;                      // the cell at level 0; its darts are darts[0, root.darts)
+  std::vector<Node<D>> nodes;        // the open sub-cells found so far (children of one node contiguous)
+  std::vector<std::uint32_t> kept;  // the darts decided kept so far
+  std::uint32_t swept = 0;          // level-0 darts [0, swept) decided by the sweep
+  std::int8_t done = -1;            // the darts of levels 0..done are all decided (their nodes all exist)
   bool generated = false;
+
+  Node<D>& node(std::uint32_t i) { return i == kRoot ? root : nodes[i]; }
 };
 
 // Cells within this many cells of the region live in an array (the reach
@@ -95,19 +136,21 @@ constexpr std::int64_t kDenseMargin = 12;
 
 constexpr std::uint8_t kUndecided = 0, kKept = 1, kRejected = 2;
 
-/// A place in the total order of darts: (time, cell, index).
-template <int D>
-struct Key {
-  double t;
-  Cell<D> cell;
-  std::uint32_t j;
-};
+// Expected darts of an open sub-cell at each refinement level (as ebeida's
+// kLevelTime; only the work depends on it, never the law of the samples).
+constexpr double kSubDarts = 0.5;
+// Open children of one sub-cell: at most 2^D. Open sub-cells of one cell in
+// all: a few in practice (a gap is smaller than a disk); far more means the
+// coverage test cannot close a gap.
+constexpr std::size_t kMaxNodesPerCell = std::size_t{1} << 16;
 
+/// The total order of darts: time, then cell, then position (a tie in time
+/// has probability zero; position breaks it the same way in every region).
 template <int D>
-bool earlier(double t, const Cell<D>& cell, std::uint32_t j, const Key<D>& k) {
-  if (t != k.t) return t < k.t;
-  if (cell != k.cell) return cell < k.cell;
-  return j < k.j;
+bool earlier(const Dart<D>& a, const Cell<D>& ca, const Dart<D>& b, const Cell<D>& cb) {
+  if (a.t != b.t) return a.t < b.t;
+  if (ca != cb) return ca < cb;
+  return static_cast<const std::array<double, D>&>(a.p) < static_cast<const std::array<double, D>&>(b.p);
 }
 
 /// The offsets of the cells that can hold a point within r of a point of cell
@@ -160,6 +203,12 @@ class Settler {
         period_(period),
         key_(mix64(mix64(seed ^ 0x756e626f756e6465ULL) + 0x9e3779b97f4a7c15ULL)),
         offsets_(neighbour_offsets<D>()) {
+    // Level k > 0 runs for kSubDarts * 2^(kD) of time: the rate per area
+    // stays one dart per cell per unit time (a sub-cell of level k is 2^-kD of
+    // a cell), and each open sub-cell expects kSubDarts darts.
+    level_end_[0] = end_time_;
+    for (int k = 0; k <= kMaxUnboundedLevel; ++k) scale_[static_cast<std::size_t>(k)] = std::ldexp(1.0, -k);
+    for (int k = 1; k <= kMaxUnboundedLevel; ++k) level_end_[k] = level_end_[k - 1] + std::ldexp(kSubDarts, k * D);
     std::size_t size = 1;
     for (int a = 0; a < D; ++a) {
       dense_lo_[a] = lo[a] - kDenseMargin;
@@ -195,11 +244,33 @@ class Settler {
     return s;
   }
 
-  /// Decides every dart of cell c before time t.
+  /// Decides every level-0 dart of cell c before time t.
   void settle_until(Cell<D> c, double t) {
     c = canonical(c);
     CellState<D>& s = state(c);
-    while (s.swept < s.darts.size() && s.darts[s.swept].t < t) decide(c, s, s.swept++);
+    while (s.swept < s.root.darts && s.darts[s.swept].t < t) {
+      decide(c, s, s.swept);
+      ++s.swept;
+    }
+    if (s.swept == s.root.darts && s.done < 0) s.done = 0;
+  }
+
+  /// Refinement level k of cell c (canonical): expands its nodes of level
+  /// k - 1 and decides the darts of those of level k. Returns whether c has
+  /// an open sub-cell at level k (darts may still come).
+  bool settle_level(const Cell<D>& c, int k) {
+    CellState<D>& s = state(c);
+    bool open = false;
+    visit(c, s, kRoot, k, [&](std::uint32_t n) {
+      if (s.node(n).level != k - 1) return;
+      expand(c, s, n);
+      open = open || s.node(n).children > 0;
+    });
+    for (std::size_t n = 0; n < s.nodes.size(); ++n)
+      if (s.nodes[n].level == k)
+        for (std::uint32_t i = 0; i < s.nodes[n].darts; ++i) decide(c, s, s.nodes[n].first_dart + i);
+    s.done = open ? static_cast<std::int8_t>(k) : kClosed;
+    return open;
   }
 
   std::size_t cells_touched() const { return cells_touched_; }
@@ -208,27 +279,228 @@ class Settler {
   const Cell<D>& reach_hi() const { return reach_hi_; }
   std::size_t darts_settled() const { return darts_settled_; }
   int max_depth() const { return max_depth_; }
+  int max_level() const { return max_level_; }
 
  private:
-  void generate(const Cell<D>& c, CellState<D>& s) const {
+  std::uint64_t cell_key(const Cell<D>& c) const {
     std::uint64_t h = key_;
     for (int a = 0; a < D; ++a) h = mix64(h ^ mix64(static_cast<std::uint64_t>(c[a]) + 0x632be59bd9b4e019ULL));
-    double t = 0.0;
+    return h;
+  }
+
+  void generate(const Cell<D>& c, CellState<D>& s) const {
+    stream(cell_key(c), c, 0, Sub<D>{}, 0.0, end_time_, s.darts);
+    s.status.assign(s.darts.size(), kUndecided);
+    s.root.darts = static_cast<std::uint32_t>(s.darts.size());
+  }
+
+  /// The darts of one Poisson stream in [start, end): those of sub-cell `sub`
+  /// of cell c at level k (level 0: the cell), rate 2^-kD per unit time (one
+  /// per cell's area), positions uniform in the sub-cell; bits from h.
+  void stream(std::uint64_t h, const Cell<D>& c, int k, const Sub<D>& sub, double start, double end,
+              std::vector<Dart<D>>& out) const {
+    const double scale = std::ldexp(1.0, -k), wait = std::ldexp(1.0, k * D);
+    double t = start;
     for (std::uint32_t j = 0;; ++j) {
       const std::uint64_t base = mix64(h + 0x9e3779b97f4a7c15ULL * (std::uint64_t{j} + 1));
-      const auto part = [base](int k) { return mix64(base ^ (0xd1b54a32d192ed03ULL * static_cast<std::uint64_t>(k + 1))); };
-      t += neg_log(uniform_open_from_bits(part(0)));
-      if (!(t < end_time_)) break;
+      const auto part = [base](int i) { return mix64(base ^ (0xd1b54a32d192ed03ULL * static_cast<std::uint64_t>(i + 1))); };
+      t += neg_log(uniform_open_from_bits(part(0))) * wait;
+      if (!(t < end)) break;
       Dart<D> d;
       d.t = t;
       for (int a = 0; a < D; ++a)
-        d.p[a] = origin(a) + (static_cast<double>(c[a]) + uniform_from_bits(part(a + 1))) * edges_[a];
+        d.p[a] = origin(a) + (static_cast<double>(c[a]) +
+                              (static_cast<double>(sub[a]) + uniform_from_bits(part(a + 1))) * scale) *
+                                 edges_[a];
       if (torus_)  // rounding must not put a dart on the torus's upper bound
         for (int a = 0; a < D; ++a)
           if (!(d.p[a] < torus_->hi[a])) d.p[a] = std::nextafter(torus_->hi[a], torus_->lo[a]);
-      s.darts.push_back(d);
+      out.push_back(d);
     }
-    s.status.assign(s.darts.size(), kUndecided);
+  }
+
+  /// The level a dart of time t belongs to.
+  int level_of(double t) const {
+    int k = 0;
+    while (!(t < level_end_[static_cast<std::size_t>(k)])) ++k;
+    return k;
+  }
+
+  /// One coordinate of the lower corner of sub-cell index i at level k of
+  /// cell index c along axis a (i = 2^k: the upper corner).
+  double corner(int a, std::int64_t c, std::uint64_t i, int k) const {
+    return origin(a) + (static_cast<double>(c) + static_cast<double>(i) * scale_[static_cast<std::size_t>(k)]) * edges_[a];
+  }
+
+  /// A node's box as centre and half-edges, widened by 2^-10 of a cell edge:
+  /// a dart's position may round past its sub-cell by up to 2^-12 of a cell
+  /// at 2^40 cells from the origin. Only used to choose what to look at.
+  struct Box {
+    std::array<double, D> mid, half;
+  };
+  Box box(const Cell<D>& c, const Sub<D>& sub, int k) const {
+    Box b;
+    for (int a = 0; a < D; ++a) {
+      const double lo = corner(a, c[a], sub[a], k), hi = corner(a, c[a], sub[a] + 1, k);
+      b.half[a] = 0.5 * (hi - lo) + 0x1.0p-10 * edges_[a];
+      b.mid[a] = lo + 0.5 * (hi - lo);
+    }
+    return b;
+  }
+  double delta(double a, double b, int axis) const { return torus_ ? torus_->delta(a, b, axis) : b - a; }
+  /// Whether a point (half = 0) or box lies within r of box b (conservatively).
+  bool near(const Box& b, const std::array<double, D>& mid, const std::array<double, D>* half) const {
+    double g2 = 0.0;
+    for (int a = 0; a < D; ++a) {
+      const double g = std::abs(delta(b.mid[a], mid[a], a)) - b.half[a] - (half ? (*half)[a] : 0.0);
+      if (g > 0.0) g2 += g * g;
+    }
+    return g2 <= r2_ * (1.0 + 1e-9);
+  }
+
+  /// Calls f(n) for node n of cell c and, recursively, for its open
+  /// descendants up to level `below` - 1 that lie within r of `near_box`
+  /// (all when null), expanding those of levels below `below` - 1 on the way
+  /// (nodes of level below - 1 are given to f unexpanded).
+  template <typename F>
+  void visit(const Cell<D>& c, CellState<D>& s, std::uint32_t n, int below, F&& f, const Box* near_box = nullptr) {
+    f(n);
+    const int level = s.node(n).level;
+    if (level + 1 >= below) return;
+    expand(c, s, n);
+    const std::uint32_t first = s.node(n).first_child, count = s.node(n).children;
+    for (std::uint32_t i = first; i < first + count; ++i) {
+      if (near_box) {
+        const Box b = box(c, s.nodes[i].sub, level + 1);
+        if (!near(*near_box, b.mid, &b.half)) continue;
+      }
+      visit(c, s, i, below, f, near_box);
+    }
+  }
+
+  /// The cells (canonical) whose points can be within r of box b of cell c:
+  /// calls f(m, state).
+  template <typename F>
+  void for_each_neighbour(const Cell<D>& c, const Box& b, F&& f) {
+    for (const Cell<D>& o : offsets_) {
+      Cell<D> m;
+      for (int a = 0; a < D; ++a) m[a] = c[a] + o[a];
+      double g2 = 0.0;  // from b to cell m, unwrapped: the same frame as b, widened as box() widens
+      for (int a = 0; a < D; ++a) {
+        const double mid = origin(a) + (static_cast<double>(m[a]) + 0.5) * edges_[a];
+        const double g = std::abs(mid - b.mid[a]) - (0.5 + 0x1.0p-10) * edges_[a] - b.half[a];
+        if (g > 0.0) g2 += g * g;
+      }
+      if (g2 > r2_ * (1.0 + 1e-9)) continue;
+      m = canonical(m);
+      f(m, state(m));
+    }
+  }
+
+  /// Every dart of the cell before this time is decided.
+  double decided_until(const CellState<D>& s) const {
+    if (s.done == kClosed) return INFINITY;
+    if (s.done >= 0) return level_end_[static_cast<std::size_t>(s.done)];
+    return s.swept < s.root.darts ? s.darts[s.swept].t : 0.0;
+  }
+
+  /// Finds the open children of node n of cell c (level k - 1 -> k): a child
+  /// stays open unless one disk of a sample kept before the level's start
+  /// holds all its corners (the disk is convex, so then it holds the child);
+  /// each open child gets its own Poisson stream of darts over the level's
+  /// time. A covered sub-cell would only get darts that are rejected, so
+  /// leaving it out changes no decision: the darts are still the space-time
+  /// Poisson process, restricted to where a dart can be kept.
+  void expand(const Cell<D>& c, CellState<D>& s, std::uint32_t n) {
+    if (s.node(n).expanded == kExpanded) return;
+    if (s.node(n).expanded == kExpanding) throw Failure("unbounded: internal error, a sub-cell depends on itself");
+    const int k = s.node(n).level + 1;
+    if (k > kMaxUnboundedLevel)
+      throw Failure("unbounded: a gap is still open after " + std::to_string(kMaxUnboundedLevel) +
+                    " levels of refinement (numerical breakdown; report this with the seed and radius)");
+    if (++depth_ > kMaxUnboundedDepth)
+      throw Failure("unbounded: a chain of dependent darts is deeper than " + std::to_string(kMaxUnboundedDepth) +
+                    " (report this with the seed and radius)");
+    max_depth_ = std::max(max_depth_, depth_);
+    max_level_ = std::max(max_level_, k);
+    s.node(n).expanded = kExpanding;
+    const Sub<D> parent = s.node(n).sub;
+    const double start = level_end_[static_cast<std::size_t>(k - 1)];
+    const Box pb = box(c, parent, k - 1);
+    // The samples kept before `start` within r of the parent: the darts of
+    // the nodes of levels below k near it, decided.
+    // Buffers reused by every call at this recursion depth (depth_ counts this call).
+    Scratch& scratch = scratch_at(depth_);
+    std::vector<Point<D>>& kept = scratch.kept;
+    kept.clear();
+    for_each_neighbour(c, pb, [&](const Cell<D>& m, CellState<D>& ms) {
+      if (decided_until(ms) >= start) {  // the usual case inside a region: a short list
+        for (const std::uint32_t j : ms.kept)
+          if (ms.darts[j].t < start && near(pb, ms.darts[j].p, nullptr)) kept.push_back(ms.darts[j].p);
+        return;
+      }
+      visit(m, ms, kRoot, k, [&](std::uint32_t i) {
+        const std::uint32_t first = ms.node(i).first_dart, count = ms.node(i).darts;
+        for (std::uint32_t j = first; j < first + count; ++j) {
+          if (!(ms.darts[j].t < start) || !near(pb, ms.darts[j].p, nullptr)) continue;
+          if (decide(m, ms, j)) kept.push_back(ms.darts[j].p);
+        }
+      }, &pb);
+    });
+    std::array<Sub<D>, (1 << D)> open;
+    std::array<std::uint32_t, (1 << D)> counts;
+    std::size_t opened = 0;
+    std::vector<Dart<D>>& darts = scratch.darts;
+    darts.clear();
+    const std::uint64_t level_key = mix64(cell_key(c) ^ mix64(0x6c6576656cULL + static_cast<std::uint64_t>(k)));
+    for (int child = 0; child < (1 << D); ++child) {
+      Sub<D> sub;
+      std::array<double, D> lo, hi;
+      for (int a = 0; a < D; ++a) {
+        sub[a] = 2 * parent[a] + static_cast<std::uint64_t>((child >> a) & 1);
+        lo[a] = corner(a, c[a], sub[a], k);
+        hi[a] = corner(a, c[a], sub[a] + 1, k);
+      }
+      bool covered = false;
+      for (const Point<D>& q : kept) {
+        double far2 = 0.0;
+        for (int a = 0; a < D; ++a) {
+          const double dl = delta(q[a], lo[a], a), dh = delta(q[a], hi[a], a);
+          far2 += std::max(dl * dl, dh * dh);
+        }
+        if (far2 < r2_) {
+          covered = true;
+          break;
+        }
+      }
+      if (covered) continue;
+      open[opened] = sub;
+      std::uint64_t h = level_key;
+      for (int a = 0; a < D; ++a) h = mix64(h ^ mix64(sub[a] + 0x8f1bbcdcbfa53e0bULL * static_cast<std::uint64_t>(a + 1)));
+      const std::size_t before = darts.size();
+      stream(h, c, k, sub, start, level_end_[static_cast<std::size_t>(k)], darts);
+      counts[opened++] = static_cast<std::uint32_t>(darts.size() - before);
+    }
+    if (s.nodes.size() + opened > kMaxNodesPerCell)
+      throw Failure("unbounded: more than " + std::to_string(kMaxNodesPerCell) +
+                    " sub-cells of one cell open (numerical breakdown; report this with the seed and radius)");
+    Node<D>& node = s.node(n);
+    node.first_child = static_cast<std::uint32_t>(s.nodes.size());
+    node.children = static_cast<std::uint32_t>(opened);
+    node.expanded = kExpanded;
+    std::uint32_t first = static_cast<std::uint32_t>(s.darts.size());
+    for (std::size_t i = 0; i < opened; ++i) {
+      Node<D> child;
+      child.sub = open[i];
+      child.level = static_cast<std::uint8_t>(k);
+      child.first_dart = first;
+      child.darts = counts[i];
+      first += counts[i];
+      s.nodes.push_back(child);
+    }
+    s.darts.insert(s.darts.end(), darts.begin(), darts.end());
+    s.status.resize(s.darts.size(), kUndecided);
+    --depth_;
   }
 
   /// Whether dart j of cell c is kept: iff no kept dart within r is earlier.
@@ -244,59 +516,86 @@ class Settler {
     max_depth_ = std::max(max_depth_, depth_);
     ++darts_settled_;
     const Dart<D> d = s.darts[j];
-    const Key<D> key{d.t, c, j};
-    struct Candidate {
-      Key<D> key;
-      CellState<D>* state;
-    };
-    std::vector<Candidate> candidates;
-    for (const Cell<D>& o : offsets_) {
-      Cell<D> m;
-      double gap2 = 0.0;  // squared distance from the dart to cell m
-      for (int a = 0; a < D; ++a) {
-        m[a] = c[a] + o[a];
-        // Widened by 2^-10 of a cell: a dart's position (c + u) * edge may
-        // round past its cell's bounds by up to 2^-12 of a cell at 2^40 cells
-        // from the origin.
-        const double lo = origin(a) + (static_cast<double>(m[a]) - 0x1.0p-10) * edges_[a],
-                     hi = lo + edges_[a] * (1.0 + 0x1.0p-9);
-        const double g = d.p[a] < lo ? lo - d.p[a] : (d.p[a] > hi ? d.p[a] - hi : 0.0);
-        gap2 += g * g;
-      }
-      if (gap2 > r2_ * (1.0 + 1e-9)) continue;  // no dart of cell m is within r
-      m = canonical(m);
-      CellState<D>& ms = state(m);
-      for (std::uint32_t k = 0; k < ms.darts.size() && ms.darts[k].t <= d.t; ++k) {
-        if (ms.status[k] == kRejected || !earlier<D>(ms.darts[k].t, m, k, key)) continue;
-        double dist2 = 0.0;
-        for (int a = 0; a < D; ++a) {
-          const double delta = torus_ ? torus_->delta(d.p[a], ms.darts[k].p[a], a) : ms.darts[k].p[a] - d.p[a];
-          dist2 += delta * delta;
+    const int level = d.t < end_time_ ? 0 : level_of(d.t);
+    std::vector<Candidate>& candidates = scratch_at(depth_).candidates;
+    candidates.clear();
+    bool rejected = false;
+    Box point;
+    point.mid = d.p;
+    point.half.fill(0.0);
+    for_each_neighbour(c, point, [&](const Cell<D>& m, CellState<D>& ms) {
+      if (rejected) return;
+      if (decided_until(ms) > d.t) {  // all of m's darts before d are decided: only its kept ones matter
+        for (const std::uint32_t k : ms.kept) {
+          if (!earlier<D>(ms.darts[k], m, d, c)) continue;
+          double dist2 = 0.0;
+          for (int a = 0; a < D; ++a) {
+            const double e = delta(d.p[a], ms.darts[k].p[a], a);
+            dist2 += e * e;
+          }
+          if (dist2 < r2_) {
+            rejected = true;
+            return;
+          }
         }
-        if (!(dist2 < r2_)) continue;
-        if (ms.status[k] == kKept) {  // already known: rejected at once
-          s.status[j] = kRejected;
-          --depth_;
-          return false;
-        }
-        candidates.push_back({Key<D>{ms.darts[k].t, m, k}, &ms});
+        return;
       }
-    }
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-      return earlier<D>(a.key.t, a.key.cell, a.key.j, b.key);
+      // The nodes of m up to d's level near d; expanding them may decide
+      // earlier darts (of lower levels), never d.
+      visit(m, ms, kRoot, level + 1, [&](std::uint32_t i) {
+        if (rejected) return;
+        const std::uint32_t first = ms.node(i).first_dart, count = ms.node(i).darts;
+        for (std::uint32_t k = first; k < first + count && ms.darts[k].t <= d.t; ++k) {
+          if (ms.status[k] == kRejected || !earlier<D>(ms.darts[k], m, d, c)) continue;
+          double dist2 = 0.0;
+          for (int a = 0; a < D; ++a) {
+            const double e = delta(d.p[a], ms.darts[k].p[a], a);
+            dist2 += e * e;
+          }
+          if (!(dist2 < r2_)) continue;
+          if (ms.status[k] == kKept) {  // already known: rejected at once
+            rejected = true;
+            return;
+          }
+          candidates.push_back({ms.darts[k], m, &ms, k});
+        }
+      }, &point);
     });
-    bool kept = true;
-    for (const Candidate& q : candidates)
-      if (decide(q.key.cell, *q.state, q.key.j)) {
-        kept = false;
-        break;
-      }
+    bool kept = !rejected;
+    if (kept) {
+      std::sort(candidates.begin(), candidates.end(),
+                [](const Candidate& a, const Candidate& b) { return earlier<D>(a.dart, a.cell, b.dart, b.cell); });
+      for (const Candidate& q : candidates)
+        if (decide(q.cell, *q.state, q.j)) {
+          kept = false;
+          break;
+        }
+    }
     s.status[j] = kept ? kKept : kRejected;
+    if (kept) s.kept.push_back(j);
     --depth_;
     return kept;
   }
 
   double origin(int a) const { return torus_ ? torus_->lo[a] : 0.0; }
+
+  struct Candidate {
+    Dart<D> dart;
+    Cell<D> cell;
+    CellState<D>* state;
+    std::uint32_t j;
+  };
+  /// Buffers of one recursion depth, kept for the call's whole run: a call
+  /// only uses its own depth's, and finishes with them before returning.
+  struct Scratch {
+    std::vector<Point<D>> kept;
+    std::vector<Dart<D>> darts;
+    std::vector<Candidate> candidates;
+  };
+  Scratch& scratch_at(int depth) {
+    if (scratch_.size() <= static_cast<std::size_t>(depth)) scratch_.resize(static_cast<std::size_t>(depth) + 1);
+    return scratch_[static_cast<std::size_t>(depth)];
+  }
 
   double r2_, end_time_;
   std::array<double, D> edges_;
@@ -310,7 +609,9 @@ class Settler {
   std::size_t cells_touched_ = 0;
   Cell<D> reach_lo_ = filled_cell<D>(INT64_MAX), reach_hi_ = filled_cell<D>(INT64_MIN);
   std::size_t darts_settled_ = 0;
-  int depth_ = 0, max_depth_ = 0;
+  int depth_ = 0, max_depth_ = 0, max_level_ = 0;
+  std::array<double, kMaxUnboundedLevel + 1> level_end_{}, scale_{};
+  std::deque<Scratch> scratch_;  // a deque: growing it moves no buffer in use
 };
 
 }  // namespace
@@ -400,13 +701,22 @@ PointSet<D> UnboundedField<D>::sample(const Domain<D>& region, UnboundedStats* s
       ++c[a];
     }
   };
-  // Sweep in windows of time so that chains inside the region stay short;
-  // the last window settles every dart (nothing is at or after the end time).
+  // Sweep level 0 in windows of time so that chains inside the region stay
+  // short; then the refinement levels, one at a time, until no cell of the
+  // region has an open sub-cell (then none of them gets a dart ever again).
   for (double w = kWindow;; w += kWindow) {
     const bool last = !(w < params_.darts_per_cell);
     const double until = last ? INFINITY : w;
     for_each_cell([&](const Cell<D>& c) { settler.settle_until(c, until); });
     if (last) break;
+  }
+  std::vector<Cell<D>> open;
+  for_each_cell([&](const Cell<D>& c) { open.push_back(settler.canonical(c)); });
+  for (int k = 1; !open.empty(); ++k) {
+    std::size_t kept = 0;
+    for (const Cell<D>& c : open)
+      if (settler.settle_level(c, k)) open[kept++] = c;
+    open.resize(kept);
   }
 
   PointSet<D> points;
@@ -423,6 +733,7 @@ PointSet<D> UnboundedField<D>::sample(const Domain<D>& region, UnboundedStats* s
     stats->cells_touched = settler.cells_touched();
     stats->darts_settled = settler.darts_settled();
     stats->max_depth = settler.max_depth();
+    stats->max_level = settler.max_level();
     std::int64_t margin = 0;
     for (int a = 0; a < D; ++a)
       margin = std::max({margin, lo[a] - settler.reach_lo()[a], settler.reach_hi()[a] - hi[a]});

@@ -1,0 +1,66 @@
+// pds generate dart-throwing --classes R1,R2,... [--class-matrix ...]: Wei's
+// multi-class hard-disk dart throwing (docs/density.md, "Several classes").
+
+#include "classes.h"
+
+#include "pds/error.h"
+#include "pds/io/point_file.h"
+#include "pds/limits.h"
+#include "pds/registry.h"
+#include "pds/samplers/multi_class.h"
+
+namespace pds::cli {
+
+void add_class_options(CLI::App& command, ClassOptions& o) {
+  command
+      .add_option("--classes", o.radii,
+                  "Several classes (dart-throwing only): the minimum distance within each, e.g. 0.02,0.04,0.08; "
+                  "adds a class column")
+      ->delimiter(',');
+  command
+      .add_option("--class-matrix", o.matrix,
+                  "With --classes: the k x k cross-class distances, row by row (symmetric, the diagonal the radii); "
+                  "default: Wei's rule")
+      ->delimiter(',');
+}
+
+void generate_classes(const CLI::App& command, const std::string& method, const ClassOptions& o,
+                      const GenerationOptions& generation, const std::string& output) {
+  if (method != "dart-throwing")
+    throw InvalidArgument("--classes is taken by dart-throwing only (Wei's multi-class dart throwing), not " + method);
+  for (const char* name : {"--count", "--radius", "--density", "--radius-range", "--invert", "--mask", "--polygons",
+                           "--fixed", "--mesh", "--vertex-density", "--dtype", "--max-memory"})
+    if (command.get_option_no_throw(name) && command.get_option_no_throw(name)->count())
+      throw InvalidArgument(std::string(name) + " does not apply with --classes (the class radii size the set)");
+  const std::map<std::string, double> params = parse_params(generation.params);
+  for (const auto& entry : params)
+    if (entry.first != "failures")
+      throw InvalidArgument("--classes takes --param failures= only, not '" + entry.first + "'");
+  validate_params(find_method(method), params);
+  for (const double r : o.radii) require_radius(r, "class radius");
+  GenerateRequest request = generation_request(generation);
+  MultiClassParams mc;
+  mc.radii = o.radii;
+  mc.matrix = o.matrix;
+  if (const auto it = params.find("failures"); it != params.end())
+    mc.max_failures = static_cast<std::uint64_t>(it->second);
+  const PointCloud table = visit_dim<kMinDim, kMaxDim>(request.dim, [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const Domain<D> domain = request.domain<D>();
+    // The densest class bounds the count; refuse what could not fit.
+    require_radius_budget(domain, *std::min_element(mc.radii.begin(), mc.radii.end()), request.max_points);
+    const MultiClassSet<D> set = multi_class<D>(mc, domain, request.seed);
+    PointCloud out{D + 1, {}};
+    out.coords.reserve(set.points.size() * (D + 1));
+    for (std::size_t i = 0; i < set.points.size(); ++i) {
+      out.coords.insert(out.coords.end(), set.points[i].begin(), set.points[i].end());
+      out.coords.push_back(set.classes[i]);
+    }
+    return out;
+  });
+  std::vector<Column> columns = coordinate_columns(request.dim);
+  columns.push_back({"class", true});
+  write_output(output, table, columns);
+}
+
+}  // namespace pds::cli

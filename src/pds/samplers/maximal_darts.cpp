@@ -1,0 +1,571 @@
+// Maximal dart throwing, exact, parallel.
+//
+// M. S. Ebeida, S. A. Mitchell, A. Patney, A. A. Davidson, J. D. Owens, "A
+// simple algorithm for maximal Poisson-disk sampling in high dimensions",
+// Computer Graphics Forum 31(2), 2012: a flat grid of cells of edge just
+// under r/sqrt(D) (a sample covers its own cell, so a cell holds one sample
+// at most), darts uniform over the cells still open, a dart kept when no
+// sample lies within r; then every open cell is split into 2^D sub-cells and
+// a sub-cell is dropped when one disk covers it (its farthest corner is
+// inside), level after level, until nothing is open. Each dart is uniform
+// over a superset of the uncovered area, so the samples are those of plain
+// sequential dart throwing run until no dart fits.
+//
+// How darts are ordered here. Darts form a Poisson process in space and time
+// on the open area (every unit of a level, cell or sub-cell, receives a
+// Poisson number of darts a window, with uniform times), so taken in time
+// order they are the papers' sequence of independent uniform darts. Time is
+// cut into windows; a window runs in four sweeps over contiguous chunks of
+// the grid, each chunk on whichever thread is free:
+//   1. draw the window's darts of every open unit and drop those within r of
+//      a sample kept in an earlier window (a unit that such a sample covers
+//      whole is closed);
+//   2. publish the surviving darts (candidates) in the grid's cells;
+//   3. decide each candidate: kept when no candidate of the window that is
+//      earlier in time, within r and itself kept exists (a recursion on ever
+//      earlier candidates, short in a short window; memoised);
+//   4. commit the kept candidates, in cell order, as samples.
+// The decision in 3 is a function of the candidates alone, so it is the same
+// whichever thread evaluates it first (two threads may both evaluate one
+// candidate and store the same answer), and the output depends neither on
+// the thread count nor on the chunking. Ying, Xin, Sun and He ("An intrinsic
+// algorithm for parallel Poisson disk sampling on arbitrary surfaces", IEEE
+// TVCG 2013) resolve conflicts by random priorities in the same way.
+//
+// Why not ebeida.cpp: that sampler sweeps cells in memory order and settles
+// each dart by recursively settling its neighbours' earlier darts, with
+// exponential waiting times per cell; its per-dart bookkeeping (a logarithm,
+// a recursion into every neighbour, 128-bit sub-cell codes) costs about 10^4
+// instructions a sample and it runs on one thread. Here a dart costs a few
+// hashes and a scan of the precomputed neighbour offsets, nearest first.
+//
+// Determinism: the darts of unit u in window w of level l come from hashes of
+// (seed, l, w, u); times are 64-bit integers (a tie, probability 2^-64 a
+// pair, goes to the lower cell). The samples are returned in commit order.
+//
+// Guarantees: minimum distance r (Domain::distance2, the analysis's function
+// at the grid's seams); maximal up to a slack of 1e-12 r plus rounding; the
+// distribution of maximal dart throwing. A torus shorter than 2 reach + 2
+// cells along an axis (a neighbour offset would meet the same cell twice)
+// is handed to ebeida, the same process.
+//
+// Memory: a 4-byte state per grid cell, the samples, one window's
+// candidates, and from level 1 the open sub-cells.
+#include "pds/samplers/maximal_darts.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "pds/detail/format.h"
+#include "pds/error.h"
+#include "pds/grid_neighbourhood.h"
+#include "pds/parallel.h"
+#include "pds/portable_math.h"
+#include "pds/rng.h"
+#include "pds/samplers/ebeida.h"
+
+namespace pds {
+namespace {
+
+// Window lengths in expected darts per unit (a cell at level 0, a sub-cell
+// after). Short first windows keep the first, dense windows' candidate
+// conflicts few; these only change the speed, never the distribution.
+constexpr double kFirstLevelWindows[] = {0.125, 0.125, 0.25, 0.5, 0.5, 0.5};
+constexpr double kLevelWindows[] = {0.5};
+// Sub-cells are split down to edge 2^-31 cells (the codes' 32 bits); those
+// still open then are dropped when their centre lies within r plus half a
+// diagonal of a sample (every point within r + 5e-10 r of it), the others
+// (whose inscribed ball is uncovered) take darts without further splitting,
+// for at most kMaxFinalRounds levels' worth of windows.
+constexpr int kMaxLevel = 31;
+constexpr int kMaxFinalRounds = 1000;
+constexpr int kMaxDepth = 20000;   // a chain of ever earlier candidates in one window
+constexpr int kPoissonTerms = 24;  // P(K >= 24) below 1e-30 for the means above
+constexpr int kChunkBits = 8;      // at most 256 chunks
+constexpr std::size_t kMaxChunkCandidates = (std::size_t{1} << 22) - 1;
+constexpr std::uint64_t kGolden = 0x9e3779b97f4a7c15ULL;
+
+/// Poisson(mean) by inversion of a 53-bit uniform (probabilities by
+/// multiplication from the portable e^-mean, so the same on every platform).
+struct PoissonTable {
+  double cdf[kPoissonTerms];
+  explicit PoissonTable(double mean) {
+    double p = exp_neg(mean), sum = p;
+    cdf[0] = sum;
+    for (int k = 1; k < kPoissonTerms; ++k) {
+      p *= mean / k;
+      sum += p;
+      cdf[k] = sum;
+    }
+  }
+  int draw(std::uint64_t bits) const {
+    const double u = uniform_from_bits(bits);
+    int k = 0;
+    while (k < kPoissonTerms - 1 && u >= cdf[k]) ++k;
+    return k;
+  }
+};
+
+template <int D>
+class MaximalDartsSampler {
+  static constexpr std::int32_t kOpen = -1, kCovered = -2, kMarker = -3;  // marker: kMarker - (local << 8 | chunk)
+  static constexpr std::uint8_t kUndecided = 0, kKept = 1, kRejected = 2;
+  static constexpr int kChildren = 1 << D;
+  using Coords = std::array<int, D>;
+  using Stencil = typename GridNeighbourhood<D>::Stencil;
+
+  struct Candidate {
+    Point<D> x;
+    std::uint64_t time;
+    std::uint32_t cell;
+    std::uint8_t status;  // read and written through std::atomic_ref in sweep 3
+    bool border;          // the cell's stencil crosses the grid's edge
+  };
+
+  /// An open sub-cell: its cell and its position there, `level` bits an axis.
+  struct Unit {
+    std::uint32_t cell;  // kDead once a sample covers it whole
+    std::array<std::uint32_t, D> code;
+  };
+  static constexpr std::uint32_t kDead = 0xffffffffu;
+
+  struct Chunk {
+    std::uint32_t begin = 0, end = 0;  // cells [begin, end)
+    std::vector<Candidate> candidates;
+    std::vector<std::uint32_t> closed;  // cells found covered, applied after the sweep
+    std::vector<Unit> units;            // open sub-cells (level >= 1), in cell order
+    std::size_t kept = 0, base = 0;
+  };
+
+ public:
+  MaximalDartsSampler(const MaximalDartsParams& params, const Domain<D>& domain, std::uint64_t seed)
+      : domain_(domain), r_(params.radius), r2_(params.radius * params.radius), threads_(params.threads) {
+    double cells = 1.0, scale = 0.0;
+    for (int a = 0; a < D; ++a) {
+      // Slightly more cells than extent sqrt(D) / r: a cell's diagonal stays
+      // below r after rounding, so a sample covers its whole cell.
+      n_[a] = static_cast<int>(std::max(1.0, std::ceil(domain.extent(a) * std::sqrt(double(D)) * (1.0 + 1e-9) / r_)));
+      cells *= n_[a];
+      scale = std::max({scale, std::abs(domain.lo[a]), std::abs(domain.hi[a])});
+    }
+    if (cells > static_cast<double>(1 << 30))
+      throw InvalidArgument("maximal-darts: radius " + detail::format_number(r_) +
+                            " needs more than 2^30 grid cells for this domain");
+    // A sub-cell is dropped only with a margin for the rounding of
+    // coordinates of this magnitude (as in ebeida.cpp).
+    const double slack = 1e-12 * r_ + 16.0 * scale * 0x1.0p-52;
+    if (slack > 1e-6 * r_)
+      throw InvalidArgument("maximal-darts: radius " + detail::format_number(r_) +
+                            " is too small for coordinates of magnitude " + detail::format_number(scale));
+    cover2_ = (r_ - slack) * (r_ - slack);
+    hood_ = GridNeighbourhood<D>(domain, n_);
+    for (int a = 0; a < D; ++a) {
+      corners_[a].resize(static_cast<std::size_t>(n_[a]) + 1);
+      for (int i = 0; i < n_[a]; ++i) corners_[a][i] = domain.lo[a] + domain.extent(a) * i / n_[a];
+      corners_[a][n_[a]] = domain.hi[a];
+    }
+    // The own cell, then every cell that can hold a sample closer than r to a
+    // point of the cell, nearest first (a rejected dart stops early).
+    std::vector<Coords> steps{Coords{}};
+    for (const Coords& step : hood_.stencil_within(r_, 1e-6).steps) steps.push_back(step);
+    near_ = hood_.stencil(std::move(steps));
+    for (int a = 0; a < D; ++a)
+      if (domain.periodic && n_[a] < 2 * near_.reach[a] + 2) fallback_ = true;
+    if (fallback_) return;
+
+    const std::size_t size = hood_.size();
+    state_.assign(size, kOpen);
+    const std::size_t chunks = std::clamp<std::size_t>(size / 2048, 1, std::size_t{1} << kChunkBits);
+    chunks_.resize(chunks);
+    for (std::size_t k = 0; k < chunks; ++k) {
+      chunks_[k].begin = static_cast<std::uint32_t>(size * k / chunks);
+      chunks_[k].end = static_cast<std::uint32_t>(size * (k + 1) / chunks);
+    }
+    // Virtual until written: the typical count with a margin (a box packs a
+    // little denser at its faces); past it the vector grows as usual.
+    const double expected = typical_count(domain.volume(), r_, D) * 1.6 + 1024.0;
+    samples_.reserve(static_cast<std::size_t>(std::min(expected, static_cast<double>(size))));
+    key_ = mix64(seed ^ 0x6d6178696d616c64ULL);
+  }
+
+  PointSet<D> run(std::uint64_t seed) {
+    if (fallback_) return ebeida<D>({r_, std::numeric_limits<std::uint64_t>::max()}, domain_, seed);
+    for (level_ = 0;; ++level_) {
+      if (level_ > kMaxLevel + kMaxFinalRounds)
+        throw Failure("maximal-darts: " + std::to_string(open_units()) + " sub-cells of edge 2^-" +
+                      std::to_string(kMaxLevel) + " cells still open after " + std::to_string(kMaxFinalRounds) +
+                      " rounds of darts (numerical breakdown)");
+      level_scale_ = std::ldexp(1.0, -std::min(level_, kMaxLevel));
+      if (level_ > 0) {
+        refine();
+        if (open_units() == 0) break;
+      }
+      const auto windows =
+          level_ == 0 ? std::span<const double>(kFirstLevelWindows) : std::span<const double>(kLevelWindows);
+      for (std::size_t w = 0; w < windows.size(); ++w) run_window(w, windows[w]);
+    }
+    return std::move(samples_);
+  }
+
+ private:
+  std::size_t open_units() const {
+    std::size_t n = 0;
+    for (const Chunk& chunk : chunks_) n += chunk.units.size();
+    return n;
+  }
+
+  template <class Body>
+  void for_chunks(Body&& body) {
+    parallel_for(0, chunks_.size(), 1, threads_, [&](std::size_t b, std::size_t e) {
+      for (std::size_t k = b; k < e; ++k) body(k, chunks_[k]);
+    });
+  }
+
+  bool interior(const Coords& c) const {
+    for (int a = 0; a < D; ++a)
+      if (c[a] < near_.reach[a] || c[a] + near_.reach[a] >= n_[a]) return false;
+    return true;
+  }
+
+  static double distance2_plain(const Point<D>& x, const Point<D>& y) {
+    double d2 = 0.0;
+    for (int a = 0; a < D; ++a) d2 += (x[a] - y[a]) * (x[a] - y[a]);
+    return d2;
+  }
+
+  /// A sample kept in an earlier window within r of x (in the cell `cell` at
+  /// c), or -1.
+  std::int32_t blocker(const Point<D>& x, std::size_t cell, const Coords& c, bool border) const {
+    if (!border) {
+      for (const std::ptrdiff_t off : near_.linear) {
+        const std::int32_t s = state_[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(cell) + off)];
+        if (s >= 0 && distance2_plain(x, samples_[static_cast<std::size_t>(s)]) < r2_) return s;
+      }
+      return -1;
+    }
+    std::int32_t found = -1;
+    hood_.any(near_, c, cell, [&](std::size_t n) {
+      const std::int32_t s = state_[n];
+      if (s >= 0 && domain_.distance2(x, samples_[static_cast<std::size_t>(s)]) < r2_) {
+        found = s;
+        return true;
+      }
+      return false;
+    });
+    return found;
+  }
+
+  /// Whether every corner of the box [lo, lo + edge] is closer to s than r
+  /// minus the slack (the farther face along each axis). On a torus both
+  /// faces must see the same image of s, else the box is reported open.
+  bool covers_box(const Point<D>& s, const Point<D>& lo, const std::array<double, D>& edge) const {
+    double far2 = 0.0;
+    for (int a = 0; a < D; ++a) {
+      const double near_face = domain_.delta(lo[a], s[a], a), far_face = domain_.delta(lo[a] + edge[a], s[a], a);
+      if (domain_.periodic && !(std::abs(near_face - far_face - edge[a]) < 0.5 * edge[a])) return false;
+      far2 += std::max(near_face * near_face, far_face * far_face);
+    }
+    return far2 < cover2_;
+  }
+
+  /// Draws the darts of one unit (a cell at level 0: code all zero) for this
+  /// window and keeps the candidates; returns false when a sample covers the
+  /// unit whole.
+  bool throw_darts(Chunk& chunk, std::size_t cell, const Coords* coords, const std::array<std::uint32_t, D>& code,
+                   std::uint64_t stream, const PoissonTable& poisson) {
+    std::uint64_t counter = stream;
+    const auto next = [&counter] { return mix64(counter += kGolden); };
+    const int darts = poisson.draw(next());
+    if (darts == 0) return true;
+    const Coords c = coords ? *coords : hood_.coords(cell);
+    const bool border = !interior(c);
+    Point<D> lo, hi;
+    std::array<double, D> edge;
+    for (int a = 0; a < D; ++a) {
+      const double cell_lo = corners_[a][static_cast<std::size_t>(c[a])];
+      hi[a] = corners_[a][static_cast<std::size_t>(c[a]) + 1];
+      edge[a] = (hi[a] - cell_lo) * level_scale_;  // exact: a power of 2
+      lo[a] = cell_lo + static_cast<double>(code[a]) * edge[a];
+    }
+    for (int k = 0; k < darts; ++k) {
+      const std::uint64_t time = next();
+      Point<D> x;
+      for (int a = 0; a < D; ++a) {
+        x[a] = lo[a] + uniform_from_bits(next()) * edge[a];
+        if (!(x[a] < hi[a])) x[a] = std::nextafter(hi[a], lo[a]);
+      }
+      const std::int32_t s = blocker(x, cell, c, border);
+      if (s < 0) {
+        chunk.candidates.push_back(Candidate{x, time, static_cast<std::uint32_t>(cell), kUndecided, border});
+      } else if (covers_box(samples_[static_cast<std::size_t>(s)], lo, edge)) {
+        return false;  // no candidate came before: that sample blocks the whole unit
+      }
+    }
+    return true;
+  }
+
+  std::uint64_t window_key(std::size_t window) const {
+    return mix64(key_ + mix64(static_cast<std::uint64_t>(level_) * 64 + window));
+  }
+
+  void run_window(std::size_t window, double length) {
+    const PoissonTable poisson(length);
+    const std::uint64_t key = window_key(window);
+    // 1. Darts, filtered against the samples of earlier windows.
+    for_chunks([&](std::size_t, Chunk& chunk) {
+      chunk.candidates.clear();
+      chunk.closed.clear();
+      if (level_ == 0) {
+        const std::array<std::uint32_t, D> zero{};
+        Coords c = hood_.coords(chunk.begin);
+        for (std::size_t cell = chunk.begin; cell < chunk.end; ++cell) {
+          if (state_[cell] == kOpen && !throw_darts(chunk, cell, &c, zero, mix64(key ^ (cell * kGolden)), poisson))
+            chunk.closed.push_back(static_cast<std::uint32_t>(cell));
+          for (int a = 0; a < D && ++c[a] == n_[a]; ++a) c[a] = 0;
+        }
+      } else {
+        for (Unit& unit : chunk.units) {
+          std::uint64_t stream = mix64(key ^ (unit.cell * kGolden));
+          for (int a = 0; a < D; ++a) stream = mix64(stream + unit.code[a]);
+          if (!throw_darts(chunk, unit.cell, nullptr, unit.code, stream, poisson)) unit.cell = kDead;
+        }
+      }
+      if (chunk.candidates.size() > kMaxChunkCandidates)
+        throw Failure("maximal-darts: more than " + std::to_string(kMaxChunkCandidates) +
+                      " candidates in one chunk of the grid");
+    });
+    // 2. Publish: each cell with candidates points at its first one.
+    for_chunks([&](std::size_t k, Chunk& chunk) {
+      for (const std::uint32_t cell : chunk.closed) state_[cell] = kCovered;
+      const auto& cands = chunk.candidates;
+      for (std::size_t j = 0; j < cands.size(); ++j)
+        if (j == 0 || cands[j - 1].cell != cands[j].cell)
+          state_[cands[j].cell] = kMarker - static_cast<std::int32_t>((j << kChunkBits) | k);
+    });
+    // 3. Decide.
+    for_chunks([&](std::size_t, Chunk& chunk) {
+      std::size_t kept = 0;
+      for (Candidate& d : chunk.candidates) kept += decide(d, 0) ? 1 : 0;
+      chunk.kept = kept;
+    });
+    // 4. Commit, in chunk order.
+    std::size_t total = samples_.size();
+    for (Chunk& chunk : chunks_) {
+      chunk.base = total;
+      total += chunk.kept;
+    }
+    samples_.resize(total);
+    for_chunks([&](std::size_t, Chunk& chunk) {
+      std::size_t next = chunk.base;
+      for (const Candidate& d : chunk.candidates) {
+        std::int32_t& state = state_[d.cell];
+        if (d.status == kKept) {
+          samples_[next] = d.x;
+          state = static_cast<std::int32_t>(next++);
+        } else if (state <= kMarker) {
+          state = kOpen;
+        }
+      }
+      if (level_ > 0)
+        std::erase_if(chunk.units, [&](const Unit& unit) { return unit.cell == kDead || state_[unit.cell] >= 0; });
+      // The first windows' candidates are the most; later ones need far less room.
+      if (chunk.candidates.capacity() > 4 * chunk.candidates.size() + 1024) {
+        chunk.candidates.clear();
+        chunk.candidates.shrink_to_fit();
+      }
+    });
+  }
+
+  /// Whether candidate d is kept: no earlier candidate of the window within r
+  /// is kept. Memoised in d.status; any thread may evaluate any candidate.
+  bool decide(Candidate& d, int depth) {
+    std::atomic_ref<std::uint8_t> status(d.status);
+    const std::uint8_t known = status.load(std::memory_order_relaxed);
+    if (known != kUndecided) return known == kKept;
+    if (depth > kMaxDepth)
+      throw Failure("maximal-darts: a chain of more than " + std::to_string(kMaxDepth) + " conflicting darts");
+    const auto blocked_by = [&](std::size_t cell) {
+      const std::int32_t s = state_[cell];
+      if (s > kMarker) return false;
+      const auto m = static_cast<std::uint32_t>(kMarker - s);
+      auto& cands = chunks_[m & ((1u << kChunkBits) - 1)].candidates;
+      for (std::size_t j = m >> kChunkBits; j < cands.size() && cands[j].cell == cell; ++j) {
+        Candidate& e = cands[j];
+        if (&e == &d) continue;
+        const bool earlier =
+            e.time < d.time || (e.time == d.time && (e.cell < d.cell || (e.cell == d.cell && &e < &d)));
+        if (!earlier) continue;
+        const double d2 = d.border ? domain_.distance2(d.x, e.x) : distance2_plain(d.x, e.x);
+        if (d2 < r2_ && decide(e, depth + 1)) return true;
+      }
+      return false;
+    };
+    bool blocked = false;
+    if (!d.border) {
+      for (const std::ptrdiff_t off : near_.linear)
+        if (blocked_by(static_cast<std::size_t>(static_cast<std::ptrdiff_t>(d.cell) + off))) {
+          blocked = true;
+          break;
+        }
+    } else {
+      blocked = hood_.any(near_, hood_.coords(d.cell), d.cell, blocked_by);
+    }
+    status.store(blocked ? kRejected : kKept, std::memory_order_relaxed);
+    return !blocked;
+  }
+
+  /// Splits every open unit into 2^D children for the level now starting and
+  /// keeps those that no single disk covers; a cell left with none is closed.
+  void refine() {
+    const int parent_level = level_ - 1;
+    // Past the deepest level the units are kept as they are, less those whose
+    // centre a disk covers.
+    const bool final = level_ > kMaxLevel;
+    // Only samples that can cover a whole child: along each axis the child's
+    // far side lies at least a child edge (half of one in the same column)
+    // beyond the gap between the cells. At level 1 that leaves the 3^D block.
+    const Stencil cover = hood_.filter(near_, [&](const Coords& off) {
+      double least2 = 0.0;
+      for (int a = 0; a < D; ++a) {
+        const double edge = hood_.edge(a), child = edge * level_scale_;
+        const double least = off[a] == 0 ? 0.5 * child : (std::abs(off[a]) - 1) * edge + child;
+        least2 += least * least;
+      }
+      return least2 < r2_;
+    });
+    for_chunks([&](std::size_t, Chunk& chunk) {
+      std::vector<Unit> children;
+      std::vector<std::array<double, D>> near;  // nearby samples' images, relative to the cell's lower corner
+      chunk.closed.clear();
+      const auto split = [&](std::uint32_t cell, std::span<const Unit> parents) {
+        const Coords c = hood_.coords(cell);
+        std::array<double, D> cell_lo, edge;
+        for (int a = 0; a < D; ++a) {
+          cell_lo[a] = corners_[a][static_cast<std::size_t>(c[a])];
+          edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * level_scale_;
+        }
+        near.clear();
+        hood_.for_each_image(final ? near_ : cover, c, cell, [&](std::size_t n, const Coords& periods) {
+          if (state_[n] < 0) return;
+          const Point<D>& s = samples_[static_cast<std::size_t>(state_[n])];
+          std::array<double, D> d;
+          for (int a = 0; a < D; ++a) d[a] = s[a] - cell_lo[a] + periods[a] * domain_.extent(a);
+          near.push_back(d);
+        });
+        const std::size_t before = children.size();
+        for (const Unit& parent : parents) {
+          const auto& code = parent.code;
+          if (final) {
+            // Within r + half a diagonal of a sample, every point of the unit
+            // lies within r + a diagonal (5e-10 r); otherwise the unit's
+            // inscribed ball is uncovered and darts find it.
+            double diagonal2 = 0.0;
+            for (int a = 0; a < D; ++a) diagonal2 += edge[a] * edge[a];
+            const double reach = r_ + 0.5 * std::sqrt(diagonal2);
+            const bool covered = std::any_of(near.begin(), near.end(), [&](const std::array<double, D>& d) {
+              double d2 = 0.0;
+              for (int a = 0; a < D; ++a) {
+                const double gap = d[a] - (static_cast<double>(code[a]) + 0.5) * edge[a];
+                d2 += gap * gap;
+              }
+              return d2 < reach * reach;
+            });
+            if (!covered) children.push_back(parent);
+            continue;
+          }
+          // The children's faces along each axis, relative to the cell's corner.
+          std::array<std::array<double, 3>, D> face;
+          for (int a = 0; a < D; ++a)
+            for (int f = 0; f < 3; ++f)
+              face[a][f] = static_cast<double>(std::uint64_t{code[a]} * 2 + static_cast<std::uint64_t>(f)) * edge[a];
+          unsigned covered = 0;
+          for (const auto& d : near) {
+            std::array<std::array<double, 2>, D> far;
+            for (int a = 0; a < D; ++a) {
+              const double q0 = (d[a] - face[a][0]) * (d[a] - face[a][0]);
+              const double q1 = (d[a] - face[a][1]) * (d[a] - face[a][1]);
+              const double q2 = (d[a] - face[a][2]) * (d[a] - face[a][2]);
+              far[a] = {std::max(q0, q1), std::max(q1, q2)};
+            }
+            for (int child = 0; child < kChildren; ++child) {
+              double far2 = 0.0;
+              for (int a = 0; a < D; ++a) far2 += far[a][(child >> a) & 1];
+              if (far2 < cover2_) covered |= 1u << child;
+            }
+            if (covered == (1u << kChildren) - 1) break;
+          }
+          for (int child = 0; child < kChildren; ++child) {
+            if (covered & (1u << child)) continue;
+            Unit unit{cell, {}};
+            for (int a = 0; a < D; ++a) unit.code[a] = code[a] * 2 + static_cast<std::uint32_t>((child >> a) & 1);
+            children.push_back(unit);
+          }
+        }
+        if (children.size() == before) chunk.closed.push_back(cell);
+      };
+      if (parent_level == 0) {
+        for (std::size_t cell = chunk.begin; cell < chunk.end; ++cell)
+          if (state_[cell] == kOpen) {
+            const Unit whole{static_cast<std::uint32_t>(cell), {}};
+            split(whole.cell, std::span<const Unit>(&whole, 1));
+          }
+      } else {
+        const std::span<const Unit> units(chunk.units);
+        for (std::size_t i = 0; i < units.size();) {
+          std::size_t j = i + 1;
+          while (j < units.size() && units[j].cell == units[i].cell) ++j;
+          split(units[i].cell, units.subspan(i, j - i));
+          i = j;
+        }
+      }
+      chunk.units = std::move(children);
+      chunk.units.shrink_to_fit();  // a vector grown by doubling would hold up to twice the open units
+    });
+    std::size_t open = 0;
+    for (Chunk& chunk : chunks_) {
+      for (const std::uint32_t cell : chunk.closed) state_[cell] = kCovered;
+      open += chunk.units.size();
+    }
+    // Open sub-cells peak near one per grid cell (level 1 or 2): a level that
+    // leaves far more would keep growing 2^D-fold with each further one.
+    if (open > 4 * state_.size() + 4096)
+      throw Failure("maximal-darts: " + std::to_string(open) + " sub-cells still open at refinement level " +
+                    std::to_string(level_) + ", more than 4 per grid cell (numerical breakdown)");
+  }
+
+  const Domain<D>& domain_;
+  double r_, r2_, cover2_ = 0.0;
+  int threads_;
+  bool fallback_ = false;
+  int level_ = 0;
+  double level_scale_ = 1.0;  // 2^-level_
+  std::uint64_t key_ = 0;
+  Coords n_{};
+  GridNeighbourhood<D> hood_;
+  std::array<std::vector<double>, D> corners_;  // cell boundaries per axis, n + 1 each
+  Stencil near_;                                // the own cell, then every cell that can hold a sample within r
+  std::vector<std::int32_t> state_;             // >= 0 a sample, kOpen, kCovered, or a candidate marker
+  std::vector<Chunk> chunks_;
+  PointSet<D> samples_;
+};
+
+}  // namespace
+
+template <int D>
+PointSet<D> maximal_darts(const MaximalDartsParams& params, const Domain<D>& domain, std::uint64_t seed) {
+  domain.validate();
+  require_radius_budget(domain, params.radius, params.max_points);
+  if (params.threads < 0)
+    throw InvalidArgument("maximal-darts: threads must be 0 (all) or positive, got " + std::to_string(params.threads));
+  return MaximalDartsSampler<D>(params, domain, seed).run(seed);
+}
+
+template PointSet<2> maximal_darts<2>(const MaximalDartsParams&, const Domain<2>&, std::uint64_t);
+template PointSet<3> maximal_darts<3>(const MaximalDartsParams&, const Domain<3>&, std::uint64_t);
+
+}  // namespace pds
