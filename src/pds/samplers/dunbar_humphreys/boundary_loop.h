@@ -280,7 +280,7 @@ template <class Kernel>
     // of several seeds at random places meet on the edges of their Voronoi
     // cells instead, which point every way. With 4 seeds a cell often spans
     // a whole period and is bounded by its own image (axis-parallel again:
-    // the axes kept 1.13 times the power); 16 leave 1.06, while every seed
+    // the axes kept 1.13 times the power); 16 leave 1.07, while every seed
     // adds seams, power at low frequencies (64 seeds: the cross is gone
     // entirely but that power doubles). A box needs none (one front never
     // meets itself there). Seeds are kept 4 rc apart, so that each one's
