@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <istream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -49,29 +50,24 @@ const char* format_name(MeshFormat format) {
 }
 
 // CGAL's OFF reader trusts its input more than a reader of arbitrary files
-// may (found by the fuzz target, read_mesh_fuzz.cpp): it reserves memory
-// for the counts the header declares (3 x 10^8 vertices took 7 GB before
-// reading one), turns large binary counts into an int overflow, and casts
-// each face index, read as a double, to an unsigned integer however large
-// or negative it is (undefined behaviour), and doubles the edge count in
-// an int. So the file is scanned here
-// first, line by line ('#' starts a comment): the keyword ([ST][C][N]OFF;
-// binary OFF is refused), counts no larger than the stream's bytes, then
-// after the vertex lines each face line's size and indices must be
-// integers, the indices in [0, vertices). Anything else in the header is
-// refused; a file that ends early is left to CGAL. The stream is left where
-// it was.
-void check_off(std::istream& in, const std::string& name) {
-  const std::streampos start = in.tellg();
-  if (start < 0) return;  // not seekable: nothing to measure against
-  in.seekg(0, std::ios::end);
-  const std::streamoff bytes = in.tellg() - start;
-  in.seekg(start);
-  auto fail = [&](const std::string& what) {
-    in.clear();
-    in.seekg(start);
-    throw InvalidArgument(name + ": " + what);
-  };
+// may (each found by the fuzz target, read_mesh_fuzz.cpp): it reserves
+// memory for the counts the header declares (3 x 10^8 vertices took 7 GB
+// before reading one); casts each face index, read as a double, to an
+// unsigned integer however large or negative it is; doubles the edge count
+// in an int; reads texture and colour entries past the end of a short vertex
+// line; casts colours to bytes unchecked; and takes the character after the
+// keyword for a separator ("OFF#BINARY" is binary to it, "OFF#0 20 0" has
+// 20 faces). pds uses positions and faces only, so the file is read here
+// line by line ('#' starts a comment; the keyword is [ST][C][N]OFF, binary
+// OFF refused), every count checked against the file's size, every face
+// index checked to be an integer in [0, vertices), and CGAL is handed a
+// plain OFF of the first three numbers of each vertex line and the index
+// list of each face line: the variants' normals, colours and textures are
+// dropped before they reach it.
+std::string plain_off(std::istream& in, const std::string& name) {
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::istringstream lines(text);
+  auto fail = [&](const std::string& what) { throw InvalidArgument(name + ": " + what); };
   auto integer = [](const std::string& t, long long& value) {
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
     return ec == std::errc() && end == t.data() + t.size();
@@ -80,7 +76,7 @@ void check_off(std::istream& in, const std::string& name) {
   std::string line;
   auto next_line = [&](std::vector<std::string>& tokens) {
     tokens.clear();
-    while (tokens.empty() && std::getline(in, line)) {
+    while (tokens.empty() && std::getline(lines, line)) {
       std::istringstream words(line.substr(0, line.find('#')));
       for (std::string w; words >> w;) tokens.push_back(w);
     }
@@ -95,42 +91,50 @@ void check_off(std::istream& in, const std::string& name) {
   for (std::size_t i = 0; i < off; ++i)
     if (std::string("STCN").find(keyword[i]) == std::string::npos)
       fail("the OFF variant " + keyword + " is not read (OFF, COFF, NOFF, STOFF and their combinations are)");
+  const std::size_t after = line.find_first_not_of(" \t\r\v\f") + keyword.size();
+  if (after < line.size() && line[after] == '#')
+    fail("the OFF keyword " + keyword + " is followed by '#'; put a space between them");
   header.erase(header.begin());
   while (header.size() < 3 && next_line(tokens)) header.insert(header.end(), tokens.begin(), tokens.end());
-  // CGAL reads the counts as tokens and the vertices by lines: what follows
-  // the counts on their line would be taken for a vertex.
-  if (header.size() > 3 && header[0].rfind("BINARY", 0) != 0)
-    fail("the OFF counts' line holds more than the three counts");
   for (const std::string& t : header)
     if (t.rfind("BINARY", 0) == 0) fail("binary OFF is not read (use ASCII OFF, PLY or OBJ)");
+  if (header.size() > 3) fail("the OFF counts' line holds more than the three counts");
   long long counts[2];
   for (int k = 0; k < 2; ++k) {
     if (header.size() < 3 || !integer(header[static_cast<std::size_t>(k)], counts[k]) || counts[k] < 0)
       fail("the OFF header needs the counts of vertices, faces and edges");
-    if (static_cast<double>(counts[k]) > static_cast<double>(bytes) / 2.0)
+    if (static_cast<double>(counts[k]) > static_cast<double>(text.size()) / 2.0)
       fail("the OFF header declares " + header[static_cast<std::size_t>(k)] + (k == 0 ? " vertices" : " faces") +
-           " in a file of " + std::to_string(bytes) + " bytes");
+           " in a file of " + std::to_string(text.size()) + " bytes");
   }
-  // The third count (edges) is read as an int and doubled.
-  long long edges = 0;
-  if (!integer(header[2], edges) || edges < 0 || edges > (1LL << 30))
-    fail("the OFF header's edge count '" + header[2] + "' is not an integer in [0, 2^30]");
-  for (long long v = 0; v < counts[0]; ++v)
-    if (!next_line(tokens)) return in.clear(), void(in.seekg(start));
+  long long edges = 0;  // unused, but must be a count
+  if (!integer(header[2], edges) || edges < 0)
+    fail("the OFF header's edge count '" + header[2] + "' is not a non-negative integer");
+  std::string plain = "OFF\n" + std::to_string(counts[0]) + " " + std::to_string(counts[1]) + " 0\n";
+  plain.reserve(text.size());
+  for (long long v = 0; v < counts[0]; ++v) {
+    if (!next_line(tokens))
+      fail("the OFF file ends after " + std::to_string(v) + " of its " + std::to_string(counts[0]) + " vertices");
+    if (tokens.size() < 3) fail("OFF vertex " + std::to_string(v) + " has fewer than three coordinates");
+    plain += tokens[0] + " " + tokens[1] + " " + tokens[2] + "\n";
+  }
   for (long long f = 0; f < counts[1]; ++f) {
-    if (!next_line(tokens)) break;
+    if (!next_line(tokens))
+      fail("the OFF file ends after " + std::to_string(f) + " of its " + std::to_string(counts[1]) + " faces");
     long long size = 0;
     if (!integer(tokens[0], size) || size < 1 || static_cast<std::size_t>(size) >= tokens.size())
       fail("OFF face " + std::to_string(f) + " does not start with its number of vertices and list them");
+    plain += tokens[0];
     for (long long i = 1; i <= size; ++i) {
       long long index = 0;
       if (!integer(tokens[static_cast<std::size_t>(i)], index) || index < 0 || index >= counts[0])
         fail("OFF face " + std::to_string(f) + " names vertex '" + tokens[static_cast<std::size_t>(i)] +
              "'; there are " + std::to_string(counts[0]));
+      plain += " " + tokens[static_cast<std::size_t>(i)];
     }
+    plain += "\n";
   }
-  in.clear();
-  in.seekg(start);
+  return plain;
 }
 
 // CGAL's PLY reader trusts the header more than a reader of arbitrary files
@@ -156,10 +160,20 @@ void check_ply_header(std::istream& in, const std::string& name) {
   };
   std::string element;  // the element being declared; empty before the first
   std::string line;
-  for (int lines = 0; lines < 100000 && std::getline(in, line); ++lines) {
+  // Lines counted as CGAL counts them: the first must be "ply", the second
+  // is taken for the format line whatever it says ("end_header ascii 0"
+  // there does not end the header), an empty line after them is an error.
+  for (long long number = 1;; ++number) {
+    if (!std::getline(in, line)) break;
+    if (number > 100000) fail("the PLY header is longer than 100,000 lines");
     std::istringstream words(line);
     std::string keyword;
-    if (!(words >> keyword)) continue;
+    if (!(words >> keyword) && number != 2) fail("line " + std::to_string(number) + " of the PLY header is empty");
+    if (number == 1) {
+      if (keyword != "ply") fail("not a PLY file (the first line is not 'ply')");
+      continue;
+    }
+    if (number == 2) continue;
     if (keyword == "end_header") break;
     if (keyword == "property") {
       if (element.empty()) fail("a PLY property is declared before any element");
@@ -203,21 +217,23 @@ void check_ply_header(std::istream& in, const std::string& name) {
 }  // namespace
 
 TriangleMesh read_mesh(std::istream& in, MeshFormat format, const std::string& name) {
-  if (format == MeshFormat::Off) check_off(in, name);
   if (format == MeshFormat::Ply) check_ply_header(in, name);
+  std::istringstream plain;
+  if (format == MeshFormat::Off) plain.str(plain_off(in, name));
+  std::istream& source = format == MeshFormat::Off ? plain : in;
   std::vector<CgalPoint> points;
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
   try {
     switch (format) {
       case MeshFormat::Obj:
-        ok = CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
+        ok = CGAL::IO::read_OBJ(source, points, polygons, CGAL::parameters::verbose(false));
         break;
       case MeshFormat::Ply:
-        ok = CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false));
+        ok = CGAL::IO::read_PLY(source, points, polygons, CGAL::parameters::verbose(false));
         break;
       case MeshFormat::Off:
-        ok = CGAL::IO::read_OFF(in, points, polygons, CGAL::parameters::verbose(false));
+        ok = CGAL::IO::read_OFF(source, points, polygons, CGAL::parameters::verbose(false));
         break;
     }
   } catch (const std::bad_alloc&) {

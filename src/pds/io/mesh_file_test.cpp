@@ -82,10 +82,26 @@ TEST(MeshFile, BadFilesNameTheProblem) {
   // not there, or loop over a count the file cannot hold: refused first.
   EXPECT_EQ(message("ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n", MeshFormat::Ply),
             "test: a PLY property is declared before any element");
+  // CGAL takes the second line for the format line whatever it says.
+  EXPECT_EQ(message("ply\nend_header ascii 0\nproperty float x\nelement vertex 4\nend_header\n", MeshFormat::Ply),
+            "test: a PLY property is declared before any element");
   EXPECT_EQ(message("ply\nformat ascii 1.0\nelement thing 1000000000000\nend_header\n", MeshFormat::Ply),
             "test: the PLY header declares 1000000000000 thing elements in a file of 60 bytes");
   EXPECT_EQ(message(std::string("OFF BINARY\n") + std::string(12, '\xff'), MeshFormat::Off),
             "test: binary OFF is not read (use ASCII OFF, PLY or OBJ)");
+  // CGAL drops the character after the keyword, so "OFF#..." is not a
+  // comment to it: these made it read 20 faces (of 300,000,000 vertices
+  // each) and a binary header (both found by the fuzz target).
+  EXPECT_EQ(message("OFF#0 20 0\n0 0 2\n300000000 1\n", MeshFormat::Off),
+            "test: the OFF keyword OFF is followed by '#'; put a space between them");
+  EXPECT_EQ(message("  COFF#BINARY\n0 0 0\n", MeshFormat::Off),
+            "test: the OFF keyword COFF is followed by '#'; put a space between them");
+  // CGAL reads texture and colour entries past a short line and casts
+  // colours to bytes unchecked: pds hands it positions and faces only.
+  EXPECT_EQ(message("STOFF\n# te\xad\n8 4 3\n", MeshFormat::Off), "test: the OFF file ends after 0 of its 8 vertices");
+  EXPECT_EQ(message("COFF\n3 1 0\n0 0 0 1e300 0 0\n1 0 0 2.5 9 9\n0 1 0 1 1 1\n3 0 1 2 7.5 -3 0\n", MeshFormat::Off),
+            "no error");
+  EXPECT_EQ(message("OFF # a comment\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", MeshFormat::Off), "no error");
   EXPECT_EQ(message("ply\nformat ascii 1.0\nelement vertex 1\nproperty uint32 x\nend_header\n0\n", MeshFormat::Ply),
             "test: the PLY vertex coordinate x has type uint32 (float or double are read)");
   EXPECT_EQ(
