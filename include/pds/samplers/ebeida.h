@@ -2,6 +2,7 @@
 // Fast maximal Poisson disk sampling on a flat quadtree (Ebeida et al.), 2D and 3D.
 
 #include <cstdint>
+#include <string>
 
 #include "pds/domain.h"
 #include "pds/limits.h"
@@ -36,5 +37,14 @@ struct EbeidaParams {
 /// numerical breakdown; not seen in testing).
 template <int D>
 PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uint64_t seed);
+
+namespace detail {
+/// Why a flat quadtree over `domain` at radius r may open too many
+/// sub-cells, for the Failure that says so: the first axis far shorter than
+/// r (each level splits it too, doubling the sub-cells for nothing), or else
+/// "numerical breakdown".
+template <int D>
+std::string quadtree_breakdown_reason(const Domain<D>& domain, double r);
+}  // namespace detail
 
 }  // namespace pds

@@ -110,6 +110,35 @@ TEST(Registry, RefusesRequestsBeyondThePointBudgetBeforeAllocating) {
   expect_rejected("regular", huge, "GiB, more than this machine's");
 }
 
+TEST(Registry, ThinDomainsAreSizedByTheirAxesNotTheirVolume) {
+  // A 1000 x 1e-6 x 1e-6 box has volume 1e-9 but holds ~10^5 points at
+  // r = 0.01 along its long axis: no radius method may take it under a cap of
+  // 1500 (CI's fuzzer found ebeida running for minutes on such a box; wei and
+  // dart-throwing returned 7 * 10^4 points).
+  GenerateRequest r = with_radius(0.01);
+  r.dim = 3;
+  r.lo = {0, 0, 0};
+  r.hi = {1000, 1e-6, 1e-6};
+  r.max_points = 1500;
+  int checked = 0;
+  for (const Method& m : methods()) {
+    if (!m.takes_radius || !m.dims.contains(3)) continue;
+    try {
+      const PointCloud cloud = generate(m.name, r);
+      EXPECT_LE(cloud.size(), r.max_points) << m.name;
+    } catch (const InvalidArgument&) {
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 5);
+  expect_rejected("ebeida", r, "with axes shorter than the radius counted as the radius");
+  // The same box, short enough to fit the cap, is sampled along its length.
+  r.hi = {1, 1e-6, 1e-6};
+  const PointCloud line = generate("dart-throwing", r);
+  EXPECT_GT(line.size(), 40u);
+  EXPECT_LE(line.size(), 101u);
+}
+
 TEST(Registry, RejectsUnknownMethodParameters) {
   GenerateRequest r = with_count(16);
   r.params["k"] = 30;

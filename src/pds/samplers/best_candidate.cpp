@@ -633,16 +633,8 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   // The leaves, up to kLeavesPerSample for each of the final samples (a
   // radius alone leaves about typical_count): refuse at once what
   // would exceed the cell budget later.
-  // A radius alone: in a box an axis thinner than r counts as r long, or a
-  // box that thin along some axes, which holds far more points than its
-  // volume says, would escape the budgets below. (Growing every axis by r
-  // would bound the count, but 80-fold too high in the 8D unit box.)
-  double volume = domain.volume();
-  if (!params.count && !domain.periodic) {
-    volume = 1.0;
-    for (int i = 0; i < D; ++i) volume *= std::max(domain.extent(i), *params.radius);
-  }
-  const double expected = params.count ? static_cast<double>(*params.count) : typical_count(volume, *params.radius, D);
+  const double expected = params.count ? static_cast<double>(*params.count)
+                                       : typical_count(sizing_volume(domain, *params.radius), *params.radius, D);
   if (!kLiteral<D> && static_cast<double>(kMaxGridCells) < expected * kLeavesPerSample<D>)
     throw InvalidArgument("best-candidate: the request needs more than " + std::to_string(kMaxGridCells) +
                           " leaf cells (" + detail::format_number(expected) + " samples)");

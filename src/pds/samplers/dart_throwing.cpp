@@ -86,7 +86,7 @@ PointSet<D> throw_darts(const DartThrowingParams& params, const Domain<D>& domai
   std::uint64_t placed = 0, failures = 0;
   // With a radius alone the run ends on a streak of misses: its share of
   // the bound takes over from the count (typical_count) as the set fills.
-  const double expected = params.count ? static_cast<double>(wanted) : typical_count(domain.volume(), params.radius, D);
+  const double expected = params.count ? static_cast<double>(wanted) : typical_count(sizing_volume(domain, params.radius), params.radius, D);
   ProgressReporter progress(params.progress, expected);
   while (placed < wanted) {
     progress.update(params.count ? static_cast<double>(placed)
@@ -114,7 +114,7 @@ PointSet<D> throw_darts(const DartThrowingParams& params, const Domain<D>& domai
 
 template <int D>
 std::uint64_t default_dart_failures(const Domain<D>& domain, double radius) {
-  const double per_packing = static_cast<double>(kDartFailuresPerPoint) * packing_count(domain.volume(), radius, D);
+  const double per_packing = static_cast<double>(kDartFailuresPerPoint) * packing_count(sizing_volume(domain, radius), radius, D);
   return std::max<std::uint64_t>(kDartMinFailures, static_cast<std::uint64_t>(std::min(per_packing, 1e18)));
 }
 

@@ -419,7 +419,7 @@ class EbeidaSampler {
     if (subs.size() > kMaxSubsPerCell<D> * state_.size() + 4096)
       throw Failure("ebeida: " + std::to_string(subs.size()) + " sub-cells still open at refinement level " +
                     std::to_string(level_) + ", more than " + std::to_string(kMaxSubsPerCell<D>) +
-                    " per grid cell (numerical breakdown)");
+                    " per grid cell (" + detail::quadtree_breakdown_reason(domain_, std::sqrt(r2_)) + ")");
     open_ = std::move(open);
     subs_ = std::move(subs);
     subs_of_ = std::move(subs_of);
@@ -452,7 +452,21 @@ PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uin
   return EbeidaSampler<D>(params, domain, seed).run();
 }
 
-#define PDS_INSTANTIATE(D) template PointSet<D> ebeida<D>(const EbeidaParams&, const Domain<D>&, std::uint64_t);
+namespace detail {
+template <int D>
+std::string quadtree_breakdown_reason(const Domain<D>& domain, double r) {
+  for (int a = 0; a < D; ++a)
+    if (domain.extent(a) < r / 16.0)
+      return "axis " + std::to_string(a) + " is " + format_number(domain.extent(a)) + " long for a radius of " +
+             format_number(r) + ": every level splits it too, doubling the sub-cells to no purpose; sample a " +
+             "domain this thin in fewer dimensions";
+  return "numerical breakdown";
+}
+}  // namespace detail
+
+#define PDS_INSTANTIATE(D)                                                                  \
+  template PointSet<D> ebeida<D>(const EbeidaParams&, const Domain<D>&, std::uint64_t); \
+  template std::string detail::quadtree_breakdown_reason<D>(const Domain<D>&, double);
 PDS_INSTANTIATE(1)
 PDS_INSTANTIATE(2)
 PDS_INSTANTIATE(3)

@@ -194,7 +194,7 @@ class MaximalDartsSampler {
     }
     // Virtual until written: the typical count with a margin (a box packs a
     // little denser at its faces); past it the vector grows as usual.
-    const double expected = typical_count(domain.volume(), r_, D) * 1.6 + 1024.0;
+    const double expected = typical_count(sizing_volume(domain, r_), r_, D) * 1.6 + 1024.0;
     samples_.reserve(static_cast<std::size_t>(std::min(expected, static_cast<double>(size))));
     key_ = mix64(seed ^ 0x6d6178696d616c64ULL);
   }
@@ -552,7 +552,8 @@ class MaximalDartsSampler {
     // leaves far more would keep growing 2^D-fold with each further one.
     if (open > 4 * state_.size() + 4096)
       throw Failure("maximal-darts: " + std::to_string(open) + " sub-cells still open at refinement level " +
-                    std::to_string(level_) + ", more than 4 per grid cell (numerical breakdown)");
+                    std::to_string(level_) + ", more than 4 per grid cell (" +
+                    detail::quadtree_breakdown_reason(domain_, r_) + ")");
   }
 
   const Domain<D>& domain_;

@@ -20,7 +20,7 @@ double radius_for_count(std::uint64_t count, const Domain<D>& domain, double rho
 
 template <int D>
 void require_count_fits(const char* method, std::uint64_t count, double radius, const Domain<D>& domain) {
-  const double most = std::floor(packing_count(domain.volume(), radius, D));
+  const double most = std::floor(packing_count(sizing_volume(domain, radius), radius, D));
   if (static_cast<double>(count) > most)
     throw InvalidArgument(std::string(method) + ": " + std::to_string(count) + " points cannot fit at radius " +
                           detail::format_number(radius) + " in this domain (the densest packing holds at most about " +
