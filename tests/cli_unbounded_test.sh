@@ -83,4 +83,20 @@ expect_exit 2 "--torus needs 4" -- unbounded -r 1 --torus 0,0,3 --region 0,0,1,1
 expect_exit 2 "--chunk" -- chunks -r 1 --region 0,0,10,10 --chunk 0 -o "$tmp/d"
 expect_exit 2 "--chunk" -- chunks -r 1 --region 0,0,10,10 --chunk -1 -o "$tmp/d"
 expect_exit 2 "10^6 chunks" -- chunks -r 1 --region 0,0,10,10 --chunk 1e-4 -o "$tmp/d"
+
+# pds generate METHOD --unbounded is the same field, for the methods whose
+# process it is; the options it cannot take are refused by name.
+expect_exit 0 "" -- generate ebeida --unbounded -r 1 -s 5 --region -3.5,2,27,19 -o "$tmp/generated.npy"
+if cmp -s "$tmp/generated.npy" "$tmp/whole.npy"; then ok; else bad "generate --unbounded differs from pds unbounded"; fi
+expect_exit 0 "" -- generate maximal-darts --unbounded --torus --bounds -3.5,2,27,19 -r 1 -s 5 \
+  --region -3.5,2,27,19 -o "$tmp/gtorus.npy"
+if cmp -s "$tmp/gtorus.npy" "$tmp/torus.npy"; then ok; else bad "generate --unbounded --torus differs"; fi
+expect_exit 2 "taken by ebeida, maximal-darts and dart-throwing" -- generate bridson --unbounded -r 1 --region 0,0,1,1
+expect_exit 2 "--region needs --unbounded" -- generate ebeida -r 1 --region 0,0,1,1
+expect_exit 2 "needs --region" -- generate ebeida --unbounded -r 1
+expect_exit 2 "needs --radius" -- generate ebeida --unbounded --region 0,0,1,1
+expect_exit 2 "--count does not apply with --unbounded" -- generate ebeida --unbounded -r 1 -n 5 --region 0,0,1,1
+expect_exit 2 "needs --torus" -- generate ebeida --unbounded -r 1 --region 0,0,1,1 --bounds 0,0,1,1
+expect_exit 2 "needs --bounds" -- generate ebeida --unbounded -r 1 --region 0,0,1,1 --torus
+expect_exit 2 "does not match --region" -- generate ebeida --unbounded -r 1 --region 0,0,1,1 --dim 3
 finish cli_unbounded

@@ -28,10 +28,10 @@ void generate_classes(const CLI::App& command, const std::string& method, const 
                       const GenerationOptions& generation, const std::string& output) {
   if (method != "dart-throwing")
     throw InvalidArgument("--classes is taken by dart-throwing only (Wei's multi-class dart throwing), not " + method);
-  for (const char* name : {"--count", "--radius", "--density", "--radius-range", "--invert", "--mask", "--polygons",
-                           "--fixed", "--mesh", "--vertex-density", "--dtype", "--max-memory"})
-    if (command.get_option_no_throw(name) && command.get_option_no_throw(name)->count())
-      throw InvalidArgument(std::string(name) + " does not apply with --classes (the class radii size the set)");
+  refuse_options(command,
+                 {"--count", "--radius", "--density", "--radius-range", "--invert", "--mask", "--polygons", "--fixed",
+                  "--mesh", "--vertex-density", "--dtype", "--max-memory", "--unbounded", "--region"},
+                 "--classes (the class radii size the set)");
   const std::map<std::string, double> params = parse_params(generation.params);
   for (const auto& entry : params)
     if (entry.first != "failures")

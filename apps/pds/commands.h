@@ -56,6 +56,10 @@ void add_domain_options(CLI::App& command, DomainOptions& options, bool dim_opti
 /// Splits --bounds into lo and hi for the dimension; empty means the unit box.
 void split_bounds(const DomainOptions& options, int dim, std::vector<double>& lo, std::vector<double>& hi);
 
+/// Throws InvalidArgument "NAME does not apply with WHAT" for the first of
+/// `names` given on `command` (options a mode of a command cannot use).
+void refuse_options(const CLI::App& command, std::initializer_list<const char*> names, const std::string& what);
+
 /// The text listing every registered method, for --help.
 std::string methods_help();
 

@@ -17,6 +17,12 @@ void add_domain_options(CLI::App& command, DomainOptions& options, bool dim_opti
       ->delimiter(',');
 }
 
+void refuse_options(const CLI::App& command, std::initializer_list<const char*> names, const std::string& what) {
+  for (const char* name : names)
+    if (const CLI::Option* option = command.get_option_no_throw(name); option && option->count())
+      throw InvalidArgument(std::string(name) + " does not apply with " + what);
+}
+
 void split_bounds(const DomainOptions& options, int dim, std::vector<double>& lo, std::vector<double>& hi) {
   lo.clear();
   hi.clear();

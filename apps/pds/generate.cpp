@@ -11,6 +11,7 @@
 #include "pds/error.h"
 #include "pds/io/point_file.h"
 #include "pds/registry.h"
+#include "unbounded.h"
 
 namespace pds::cli {
 namespace {
@@ -23,6 +24,7 @@ struct GenerateOptions {
   ConstraintOptions constraints;
   MeshOptions mesh;
   ClassOptions classes;
+  UnboundedGenerateOptions unbounded;
 };
 
 }  // namespace
@@ -43,8 +45,13 @@ void add_generate(CLI::App& app) {
   add_constraint_options(*cmd, opt->constraints);
   add_mesh_options(*cmd, opt->mesh);
   add_class_options(*cmd, opt->classes);
+  add_unbounded_generate_options(*cmd, opt->unbounded);
 
   cmd->callback([opt, cmd] {
+    if (unbounded_requested(opt->unbounded)) {
+      generate_unbounded(*cmd, opt->method, opt->unbounded, opt->generation, opt->output);
+      return;
+    }
     if (classes_requested(opt->classes)) {
       generate_classes(*cmd, opt->method, opt->classes, opt->generation, opt->output);
       return;

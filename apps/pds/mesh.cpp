@@ -27,10 +27,10 @@ void generate_on_mesh(const CLI::App& command, const std::string& method, const 
   if (method != "elimination")
     throw InvalidArgument("--mesh is taken by elimination only (weighted sample elimination on the surface), not " +
                           method);
-  for (const char* name : {"--dim", "--torus", "--bounds", "--density", "--radius-range", "--invert", "--mask",
-                           "--polygons", "--fixed", "--dtype", "--max-memory"})
-    if (command.get_option_no_throw(name) && command.get_option_no_throw(name)->count())
-      throw InvalidArgument(std::string(name) + " does not apply with --mesh (the mesh is the domain)");
+  refuse_options(command,
+                 {"--dim", "--torus", "--bounds", "--density", "--radius-range", "--invert", "--mask", "--polygons",
+                  "--fixed", "--dtype", "--max-memory", "--unbounded", "--region"},
+                 "--mesh (the mesh is the domain)");
   const bool by_count = generation.count_option && generation.count_option->count();
   const bool by_radius = generation.radius_option && generation.radius_option->count();
   if (by_count == by_radius) throw InvalidArgument("--mesh needs exactly one of --count and --radius");

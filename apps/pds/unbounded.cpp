@@ -9,6 +9,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "unbounded.h"
+
 #include "analysis_common.h"
 #include "commands.h"
 #include "pds/detail/format.h"
@@ -104,9 +106,8 @@ nlohmann::ordered_json stats_json(const UnboundedStats& s) {
 
 template <int D>
 void run_unbounded(const UnboundedOptions& o) {
-  const UnboundedField<D> field = field_of<D>(o);
   UnboundedStats stats;
-  const PointSet<D> points = field.sample(region_of<D>(o), &stats);
+  const PointSet<D> points = field_of<D>(o).sample(region_of<D>(o), &stats);
   write_output(o.output, PointCloud::from(points));
   if (o.output == "-") return;
   nlohmann::ordered_json out;
@@ -259,7 +260,60 @@ void run_chunks(const UnboundedOptions& o, const ChunkTeam& team) {
   std::cout << out.dump(2) << std::endl;
 }
 
+template <int D>
+void write_field_samples(const UnboundedOptions& o) {
+  write_output(o.output, PointCloud::from(field_of<D>(o).sample(region_of<D>(o))));
+}
+
 }  // namespace
+
+void add_unbounded_generate_options(CLI::App& command, UnboundedGenerateOptions& o) {
+  command.add_flag("--unbounded", o.unbounded,
+                   "The samples inside --region of the unbounded field of --seed, one maximal Poisson disk set on the "
+                   "whole plane or space (ebeida, maximal-darts, dart-throwing; docs/unbounded.md); with --torus the "
+                   "field lives on the torus --bounds");
+  command
+      .add_option("--region", o.region,
+                  "With --unbounded: the box to sample, lo then hi corners (x0,y0,x1,y1 or x0,y0,z0,x1,y1,z1)")
+      ->delimiter(',');
+}
+
+void generate_unbounded(const CLI::App& command, const std::string& method, const UnboundedGenerateOptions& options,
+                        const GenerationOptions& generation, const std::string& output) {
+  if (!options.unbounded) throw InvalidArgument("--region needs --unbounded (a box of the unbounded field)");
+  // The field is maximal dart throwing: the process these methods sample in a
+  // bounded domain (dart-throwing until darts keep missing, nearly).
+  if (method != "ebeida" && method != "maximal-darts" && method != "dart-throwing")
+    throw InvalidArgument("--unbounded is taken by ebeida, maximal-darts and dart-throwing (the field is maximal dart "
+                          "throwing, their process), not " + method);
+  refuse_options(command,
+                 {"--count", "--density", "--radius-range", "--invert", "--mask", "--polygons", "--fixed", "--mesh",
+                  "--vertex-density", "--classes", "--class-matrix", "--dtype", "--max-memory", "--param", "--threads"},
+                 "--unbounded (the field takes --radius, --seed, --region, --max-points, and --torus with --bounds; "
+                 "pds chunks samples a region on several threads)");
+  if (!(generation.radius_option && generation.radius_option->count()))
+    throw InvalidArgument("--unbounded needs --radius (the field's minimum distance)");
+  UnboundedOptions o;
+  o.radius = generation.radius;
+  o.seed = generation.seed;
+  o.region = options.region;
+  o.max_points = generation.max_points;
+  o.output = output;
+  if (o.region.empty()) throw InvalidArgument("--unbounded needs --region (the box to sample)");
+  const int dim = region_dim(o);
+  if (const CLI::Option* d = command.get_option_no_throw("--dim"); d && d->count() && generation.domain.dim != dim)
+    throw InvalidArgument("--dim " + std::to_string(generation.domain.dim) + " does not match --region, which has " +
+                          std::to_string(o.region.size()) + " values (dimension " + std::to_string(dim) + ")");
+  if (generation.domain.torus) {
+    if (generation.domain.bounds.empty())
+      throw InvalidArgument("--unbounded --torus needs --bounds: the torus the field lives on");
+    o.torus = generation.domain.bounds;
+  } else if (!generation.domain.bounds.empty()) {
+    throw InvalidArgument("--bounds with --unbounded is the torus of a periodic field and needs --torus; the box to "
+                          "sample is --region");
+  }
+  by_dim(o, write_field_samples<2>, write_field_samples<3>);
+}
 
 void add_unbounded(CLI::App& app) {
   auto opt = std::make_shared<UnboundedOptions>();
