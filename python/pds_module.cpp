@@ -49,10 +49,11 @@ namespace {
 using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 /// A NumPy array of `shape` that owns `values` (moved, not copied).
-py::array_t<double> adopt(std::vector<double>&& values, std::vector<py::ssize_t> shape) {
-  auto* owner = new std::vector<double>(std::move(values));
-  py::capsule release(owner, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  return py::array_t<double>(std::move(shape), owner->data(), release);
+template <class T>
+py::array_t<T> adopt(std::vector<T>&& values, std::vector<py::ssize_t> shape) {
+  auto* owner = new std::vector<T>(std::move(values));
+  py::capsule release(owner, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>(std::move(shape), owner->data(), release);
 }
 
 /// The request's domain, validated by the registry's own rules (same messages).
@@ -164,6 +165,23 @@ py::array_t<double> generate(const std::string& method, std::optional<std::uint6
       make_request(count, radius, dim, std::move(lo), std::move(hi), torus, seed, threads, max_points, params);
   request.float32 = float32;
   return run_request(method, request, sized);
+}
+
+/// Wei's multi-class dart throwing: (points, classes), as `pds generate
+/// dart-throwing --classes` writes them.
+py::tuple generate_classes(std::vector<double> radii, std::vector<double> matrix, int dim, std::vector<double> lo,
+                           std::vector<double> hi, bool torus, std::uint64_t seed, std::uint64_t max_points,
+                           std::uint64_t failures) {
+  const pds::GenerateRequest request =
+      make_request(std::nullopt, std::nullopt, dim, std::move(lo), std::move(hi), torus, seed, 0, max_points, {});
+  const pds::MultiClassParams params{.radii = std::move(radii), .matrix = std::move(matrix), .max_failures = failures};
+  pds::ClassCloud set;
+  {
+    py::gil_scoped_release unlocked;
+    set = pds::generate_classes(params, request);
+  }
+  const auto n = static_cast<py::ssize_t>(set.classes.size());
+  return py::make_tuple(adopt(std::move(set.points.coords), {n, set.points.dim}), adopt(std::move(set.classes), {n}));
 }
 
 #ifdef PDS_WITH_RENDER
@@ -394,6 +412,8 @@ PYBIND11_MODULE(_pds, m) {
   m.def("generate", &generate, py::arg("method"), py::arg("count"), py::arg("radius"), py::arg("dim"), py::arg("lo"),
         py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"), py::arg("max_points"), py::arg("params"),
         py::arg("sized"), py::arg("float32") = false);
+  m.def("generate_classes", &generate_classes, py::arg("radii"), py::arg("matrix"), py::arg("dim"), py::arg("lo"),
+        py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("max_points"), py::arg("failures"));
 #ifdef PDS_WITH_RENDER
   m.def("generate_constrained", &generate_constrained, py::arg("method"), py::arg("count"), py::arg("radius"),
         py::arg("dim"), py::arg("lo"), py::arg("hi"), py::arg("torus"), py::arg("seed"), py::arg("threads"),

@@ -39,25 +39,21 @@ void generate_classes(const CLI::App& command, const std::string& method, const 
   validate_params(find_method(method), params);
   for (const double r : o.radii) require_radius(r, "class radius");
   GenerateRequest request = generation_request(generation);
+  request.params.clear();  // failures is the classes' own setting, read above
   MultiClassParams mc;
   mc.radii = o.radii;
   mc.matrix = o.matrix;
   if (const auto it = params.find("failures"); it != params.end())
     mc.max_failures = static_cast<std::uint64_t>(it->second);
-  const PointCloud table = visit_dim<kMinDim, kMaxDim>(request.dim, [&](auto d) {
-    constexpr int D = decltype(d)::value;
-    const Domain<D> domain = request.domain<D>();
-    // The densest class bounds the count; refuse what could not fit.
-    require_radius_budget(domain, *std::min_element(mc.radii.begin(), mc.radii.end()), request.max_points);
-    const MultiClassSet<D> set = multi_class<D>(mc, domain, request.seed);
-    PointCloud out{D + 1, {}};
-    out.coords.reserve(set.points.size() * (D + 1));
-    for (std::size_t i = 0; i < set.points.size(); ++i) {
-      out.coords.insert(out.coords.end(), set.points[i].begin(), set.points[i].end());
-      out.coords.push_back(set.classes[i]);
-    }
-    return out;
-  });
+  const ClassCloud set = generate_classes(mc, request);
+  const int dim = set.points.dim;
+  PointCloud table{dim + 1, {}};
+  table.coords.reserve(set.classes.size() * static_cast<std::size_t>(dim + 1));
+  for (std::size_t i = 0; i < set.classes.size(); ++i) {
+    const double* p = set.points.coords.data() + i * static_cast<std::size_t>(dim);
+    table.coords.insert(table.coords.end(), p, p + dim);
+    table.coords.push_back(set.classes[i]);
+  }
   std::vector<Column> columns = coordinate_columns(request.dim);
   columns.push_back({"class", true});
   write_output(output, table, columns);

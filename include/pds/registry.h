@@ -23,6 +23,7 @@
 #include "pds/point.h"
 #include "pds/progress.h"
 #include "pds/samplers/constraints.h"
+#include "pds/samplers/multi_class.h"
 
 namespace pds {
 
@@ -174,6 +175,17 @@ void validate_params(const Method& m, const std::map<std::string, double>& param
 /// result keeping its promises (a method that promises a minimum distance
 /// samples at the slightly larger radius of float32_sampling_radius).
 PointCloud generate(const std::string& method, const GenerateRequest& request);
+
+/// Several classes of samples (Wei's multi-class dart throwing,
+/// pds/samplers/multi_class.h) for the request's dimension, domain and seed:
+/// `points` of dimension request.dim and the class of each (0 to k - 1).
+/// The densest class's packing must fit request.max_points. The request's
+/// count, radius, parameters and constraints are not taken (InvalidArgument).
+struct ClassCloud {
+  PointCloud points;
+  std::vector<std::uint32_t> classes;
+};
+ClassCloud generate_classes(const MultiClassParams& params, const GenerateRequest& request);
 
 /// The peak memory in bytes a request to `method` is expected to allocate:
 /// its points (the count, or for a radius pds::typical_count, an estimate)

@@ -33,6 +33,7 @@ from . import _pds
 
 __all__ = [
     "generate",
+    "generate_classes",
     "tile",
     "methods",
     "analyze",
@@ -164,6 +165,38 @@ def generate(
                        dt == _np.float32)
     # float32 output holds float32 values already: the cast is exact.
     return points.astype(_np.float32) if dt == _np.float32 else points
+
+
+def generate_classes(
+    radii,
+    *,
+    matrix=None,
+    dim: int = 2,
+    bounds=None,
+    torus: bool = False,
+    seed: int = 0,
+    max_points: int = MAX_POINTS,
+    failures: int = 0,
+) -> tuple[_np.ndarray, _np.ndarray]:
+    """Several classes of Poisson disk samples (Wei, "Multi-class blue noise
+    sampling", SIGGRAPH 2010; docs/density.md), as ``pds generate
+    dart-throwing --classes`` makes them.
+
+    ``radii`` are the minimum distances within each class. ``matrix`` is the
+    k x k symmetric matrix of least distances between classes (its diagonal
+    the radii); by default Wei's, under which every class alone and the union
+    of the sparser ones are Poisson disk sets. Darts go to the class furthest
+    below its share; a class closes after ``failures`` rejected darts in a row
+    (0: the default bound at the matrix's smallest entry). Returns
+    ``(points, classes)``: a float64 array of shape (N, dim) and a uint32
+    array of shape (N,) with the class of each point (0 to k - 1). Every pair
+    of points of classes a and b lies at least ``matrix[a][b]`` apart.
+    """
+    radii_list = [float(r) for r in _np.atleast_1d(_np.asarray(radii, dtype=float))]
+    flat = [] if matrix is None else [float(v) for v in _np.asarray(matrix, dtype=float).ravel()]
+    lo, hi = _bounds(bounds, dim)
+    return _pds.generate_classes(radii_list, flat, int(dim), lo, hi, bool(torus), _uint(seed, "seed"),
+                                 _uint(max_points, "max_points"), _uint(failures, "failures"))
 
 
 def _request_args(method, dim, bounds, torus, seed, threads, max_points, params):

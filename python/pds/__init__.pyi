@@ -30,6 +30,17 @@ def generate(
     fixed: npt.ArrayLike | None = ...,
     **params: float,
 ) -> npt.NDArray[np.float64] | npt.NDArray[np.float32]: ...
+def generate_classes(
+    radii: Sequence[float] | npt.ArrayLike,
+    *,
+    matrix: npt.ArrayLike | None = ...,
+    dim: int = ...,
+    bounds: _Bounds = ...,
+    torus: bool = ...,
+    seed: int = ...,
+    max_points: int = ...,
+    failures: int = ...,
+) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.uint32]]: ...
 def tile(
     method: str,
     *,

@@ -268,4 +268,26 @@ PointCloud generate(const std::string& method, const GenerateRequest& request) {
   return request.float32 ? run_float32(m, request) : m.run(request);
 }
 
+ClassCloud generate_classes(const MultiClassParams& params, const GenerateRequest& request) {
+  if (request.count || request.radius)
+    throw InvalidArgument("classes: the class radii size the set; a count or a radius is not taken");
+  if (!request.params.empty())
+    throw InvalidArgument("classes: method parameters are not taken (failures is the classes' own setting)");
+  if (request.constraints.active() || request.float32)
+    throw InvalidArgument("classes: a density, a mask, fixed points or float32 are not taken");
+  if (params.radii.empty()) throw InvalidArgument("classes: need at least one class radius");
+  for (const double r : params.radii) require_radius(r, "class radius");
+  ClassCloud out;
+  out.points = visit_dim<kMinDim, kMaxDim>(request.dim, [&](auto d) {
+    constexpr int D = decltype(d)::value;
+    const Domain<D> domain = request.domain<D>();
+    // The densest class bounds the count; refuse what could not fit.
+    require_radius_budget(domain, *std::min_element(params.radii.begin(), params.radii.end()), request.max_points);
+    MultiClassSet<D> set = multi_class<D>(params, domain, request.seed);
+    out.classes = std::move(set.classes);
+    return PointCloud::from<D>(set.points);
+  });
+  return out;
+}
+
 }  // namespace pds
