@@ -406,6 +406,15 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, st
   // for each random pick.
   PointSet<D> active;
   AnnulusOffsets<D> offsets(radius, surface, seed);
+  // Along an axis of a box shorter than r an annulus offset leaves the box
+  // almost always (a 1 x 1 x 0.001 slab at r = 0.01 grew 4 points): there
+  // candidates take a uniform coordinate instead, from a stream of their own
+  // so that other domains keep their bytes. The other axes keep the offset,
+  // and the grid still decides every candidate.
+  std::array<bool, D> flat{};
+  bool any_flat = false;
+  for (int i = 0; i < D && !Periodic; ++i) any_flat |= flat[i] = domain.extent(i) < radius;
+  Rng flat_rng(seed, {0x666c6174 /* "flat" */});
   std::size_t cell = 0;
   const Point<D> first = uniform_point(rng, domain);
   grid.is_free(first, cell);
@@ -435,8 +444,11 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, st
         } else {
           c = domain.wrap(c);
         }
-      } else if (!domain.contains(c)) {
-        continue;
+      } else {
+        if (any_flat)
+          for (int i = 0; i < D; ++i)
+            if (flat[i]) c[i] = flat_rng.uniform(domain.lo[i], domain.hi[i]);
+        if (!domain.contains(c)) continue;
       }
       if (grid.is_free(c, cell)) {
         grid.insert(c, cell);

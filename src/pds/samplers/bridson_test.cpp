@@ -155,6 +155,30 @@ TEST(Bridson, RadiusLargerThanTheDomainGivesOnePoint) {
   }
 }
 
+// A box thinner than r along some axes: annulus offsets leave it (the slab
+// below grew 4 points before candidates took a uniform coordinate along
+// such axes); the set now fills it about as the box of the other axes is
+// filled (6,232 against 6,220 for the unit square, 74 against 68 for the
+// unit interval, seed 3).
+TEST(Bridson, BoxesThinnerThanTheRadiusFillUp) {
+  BridsonParams params;
+  params.radius = 0.01;
+  const auto slab = Domain<3>::box({0, 0, 0}, {1, 1, 0.001});
+  const auto in_slab = bridson(params, slab, 3);
+  expect_poisson_disk(in_slab, slab, params.radius);
+  EXPECT_GT(static_cast<double>(in_slab.size()),
+            0.9 * static_cast<double>(bridson(params, Domain<2>::unit(false), 3).size()));
+  const auto line = static_cast<double>(bridson(params, Domain<1>::unit(false), 3).size());
+  const auto tube = Domain<3>::box({0, 0, 0}, {1, 1e-6, 1e-6});
+  const auto in_tube = bridson(params, tube, 3);
+  expect_poisson_disk(in_tube, tube, params.radius);
+  EXPECT_GT(static_cast<double>(in_tube.size()), 0.9 * line);
+  const auto strip = Domain<2>::box({0, 0}, {1, 0.001});
+  const auto in_strip = bridson(params, strip, 3);
+  expect_poisson_disk(in_strip, strip, params.radius);
+  EXPECT_GT(static_cast<double>(in_strip.size()), 0.9 * line);
+}
+
 TEST(Bridson, MoreCandidatesPackMorePoints) {
   const auto domain = Domain<2>::unit(true);
   BridsonParams params;
