@@ -1,8 +1,10 @@
 #pragma once
 // Fast maximal Poisson disk sampling on a flat quadtree (Ebeida et al.), 2D and 3D.
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
-#include <string>
 
 #include "pds/domain.h"
 #include "pds/limits.h"
@@ -39,12 +41,23 @@ template <int D>
 PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uint64_t seed);
 
 namespace detail {
-/// Why a flat quadtree over `domain` at radius r may open too many
-/// sub-cells, for the Failure that says so: the first axis far shorter than
-/// r (each level splits it too, doubling the sub-cells for nothing), or else
-/// "numerical breakdown".
+/// The levels each axis of a flat quadtree over cells of n[a] per axis waits
+/// before it is split (at most max_level). A cell is as thin as the domain
+/// along an axis shorter than the cell's edge elsewhere; splitting that axis
+/// with the others would double the open sub-cells each level to no purpose
+/// (a 100 x 1e-4 x 1e-4 box at r = 0.01 opened 81,920 at level 7), so it
+/// waits until the other axes' sub-cells are as thin: a level's sub-cells stay
+/// within a factor 2 of cubic. Cells of two or more along every axis are within
+/// that factor already (their edges lie in (r / (2 sqrt D), r / sqrt D]): no delay.
 template <int D>
-std::string quadtree_breakdown_reason(const Domain<D>& domain, double r);
+std::array<int, D> quadtree_axis_delays(const Domain<D>& domain, const std::array<int, D>& n, int max_level) {
+  double widest = 0.0;
+  for (int a = 0; a < D; ++a) widest = std::max(widest, domain.extent(a) / n[a]);
+  std::array<int, D> delay{};
+  for (int a = 0; a < D; ++a)
+    while (delay[a] < max_level && std::ldexp(domain.extent(a) / n[a], delay[a] + 1) <= widest) ++delay[a];
+  return delay;
+}
 }  // namespace detail
 
 }  // namespace pds

@@ -142,6 +142,8 @@ class EbeidaSampler {
     // cells revisit cells but reach other periodic images of their samples;
     // refine() needs every image that can cover a sub-cell, so the stencil is
     // not cut at half a period.
+    delay_ = detail::quadtree_axis_delays<D>(domain, n_, kMaxLevel<D>);
+    set_level(0);
     near_ = hood_.stencil_within(r, 1e-6);
     state_.assign(stride, kOpen);
     open_.resize(stride);
@@ -159,7 +161,7 @@ class EbeidaSampler {
       if (level_ > kMaxLevel<D>)
         throw Failure("ebeida: " + std::to_string(open_.size()) + " cells still open after " +
                       std::to_string(kMaxLevel<D>) + " levels of refinement (numerical breakdown)");
-      level_scale_ = std::ldexp(1.0, -level_);
+      set_level(level_);
       if (level_ > 0) refine(start);
       if (open_.empty()) break;
       const double end = start + (level_ == 0 ? kFirstLevelTime : kLevelTime);
@@ -177,6 +179,25 @@ class EbeidaSampler {
   }
 
  private:
+  /// Each axis's bits in a sub-cell's code at `level` (none until its delay
+  /// is over), where they start, and the sub-cells' edge over the cell's.
+  void set_bits(int level, std::array<int, D>& bits, std::array<int, D>& offset) const {
+    int at = 0;
+    for (int a = 0; a < D; ++a) {
+      bits[a] = std::max(0, level - delay_[a]);
+      offset[a] = at;
+      at += bits[a];
+    }
+  }
+  void set_level(int level) {
+    set_bits(level, bits_, offset_);
+    for (int a = 0; a < D; ++a) scale_[a] = std::ldexp(1.0, -bits_[a]);
+  }
+  /// Axis a's index in `code` at bits/offset.
+  static std::uint64_t index_of(Code code, int bits, int offset) {
+    return static_cast<std::uint64_t>((code >> offset) & ((Code{1} << bits) - 1));
+  }
+
   std::uint64_t level_key(int level) const { return mix64(mix64(seed_ ^ 0x6562656964614c76ULL) + mix64(level)); }
 
   /// The random bits of dart `dart` of `cell`: part 0 its waiting time, parts
@@ -195,11 +216,10 @@ class EbeidaSampler {
 
   /// The lower corner and edge of sub-cell `code` of `cell` at the current level.
   void sub_box(const std::array<int, D>& c, Code code, Point<D>& lo, std::array<double, D>& edge) const {
-    const Code mask = (Code{1} << level_) - 1;
     for (int a = 0; a < D; ++a) {
       const double cell_lo = corners_[a][static_cast<std::size_t>(c[a])];
-      edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo) * level_scale_;  // exact: a power of 2
-      lo[a] = cell_lo + static_cast<double>(static_cast<std::uint64_t>((code >> (a * level_)) & mask)) * edge[a];
+      edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo) * scale_[a];  // exact: a power of 2
+      lo[a] = cell_lo + static_cast<double>(index_of(code, bits_[a], offset_[a])) * edge[a];
     }
   }
 
@@ -324,14 +344,20 @@ class EbeidaSampler {
     std::vector<std::array<double, D>> near;  // nearby samples, relative to the cell's lower corner
     const std::uint64_t key = key_ = level_key(level_);
     const int parent_level = level_ - 1;
-    const Code parent_mask = (Code{1} << parent_level) - 1;
+    std::array<int, D> parent_bits, parent_offset;
+    set_bits(parent_level, parent_bits, parent_offset);
+    // Children along axes still waiting are not made: they start covered.
+    std::bitset<kChildren> waiting;
+    for (int child = 0; child < kChildren; ++child)
+      for (int a = 0; a < D; ++a)
+        if ((child >> a) & 1 && bits_[a] == parent_bits[a]) waiting.set(child);
     // Only samples that can cover a whole child: along each axis the child's
     // far side lies at least a child edge (half of one in the same column)
     // beyond the gap between the cells. At level 1 that leaves the 3^D block.
     const Stencil cover = hood_.filter(near_, [&](const std::array<int, D>& off) {
       double least2 = 0.0;
       for (int a = 0; a < D; ++a) {
-        const double edge = domain_.extent(a) / n_[a], child = edge * level_scale_;
+        const double edge = domain_.extent(a) / n_[a], child = edge * scale_[a];
         const double least = off[a] == 0 ? 0.5 * child : (std::abs(off[a]) - 1) * edge + child;
         least2 += least * least;
       }
@@ -343,7 +369,7 @@ class EbeidaSampler {
       std::array<double, D> cell_lo, edge;
       for (int a = 0; a < D; ++a) {
         cell_lo[a] = corners_[a][static_cast<std::size_t>(c[a])];
-        edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * level_scale_;
+        edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * scale_[a];
       }
       near.clear();
       // Each neighbour offset is one periodic image of the neighbour's sample:
@@ -369,16 +395,21 @@ class EbeidaSampler {
       const std::uint32_t parents = parent_subs.count;
       for (std::uint32_t k = 0; k < parents; ++k) {
         const Code parent = parent_level == 0 ? 0 : subs_[parent_subs.begin + k];
-        // The children's faces along each axis, relative to the cell's corner.
+        // The children's faces along each axis, relative to the cell's corner
+        // (an axis not split: the parent's two faces, the second twice).
         std::array<std::array<double, 3>, D> face;
+        std::array<std::uint64_t, D> first;
         for (int a = 0; a < D; ++a) {
-          const Code first = ((parent >> (a * parent_level)) & parent_mask) * 2;
-          for (int f = 0; f < 3; ++f) face[a][f] = static_cast<double>(static_cast<std::uint64_t>(first) + f) * edge[a];
+          const std::uint64_t index = index_of(parent, parent_bits[a], parent_offset[a]);
+          const bool split = bits_[a] > parent_bits[a];
+          first[a] = split ? index * 2 : index;
+          for (int f = 0; f < 3; ++f)
+            face[a][f] = static_cast<double>(first[a] + static_cast<std::uint64_t>(split ? f : std::min(f, 1))) * edge[a];
         }
         // A child is covered when its farthest corner is inside one disk: the
         // sum over axes of the larger squared distance to its two faces (the
         // slack in cover2_ absorbs the rounding of these relative coordinates).
-        std::bitset<kChildren> covered;  // 2^D children: 256 in 8D
+        std::bitset<kChildren> covered = waiting;  // 2^D children: 256 in 8D
         for (const auto& d : near) {
           std::array<std::array<double, 2>, D> far;
           for (int a = 0; a < D; ++a) {
@@ -397,10 +428,7 @@ class EbeidaSampler {
         for (int child = 0; child < kChildren; ++child) {
           if (covered.test(child)) continue;
           Code code = 0;
-          for (int a = 0; a < D; ++a) {
-            const Code i = ((parent >> (a * parent_level)) & parent_mask) * 2 + ((child >> a) & 1);
-            code |= i << (a * level_);
-          }
+          for (int a = 0; a < D; ++a) code |= Code{first[a] + static_cast<std::uint64_t>((child >> a) & 1)} << offset_[a];
           subs.push_back(code);
         }
       }
@@ -419,7 +447,7 @@ class EbeidaSampler {
     if (subs.size() > kMaxSubsPerCell<D> * state_.size() + 4096)
       throw Failure("ebeida: " + std::to_string(subs.size()) + " sub-cells still open at refinement level " +
                     std::to_string(level_) + ", more than " + std::to_string(kMaxSubsPerCell<D>) +
-                    " per grid cell (" + detail::quadtree_breakdown_reason(domain_, std::sqrt(r2_)) + ")");
+                    " per grid cell (numerical breakdown)");
     open_ = std::move(open);
     subs_ = std::move(subs);
     subs_of_ = std::move(subs_of);
@@ -430,7 +458,9 @@ class EbeidaSampler {
   double r2_, cover2_ = 0.0;
   int level_ = 0;
   std::uint64_t key_ = 0;     // level_key(level_)
-  double level_scale_ = 1.0;  // 2^-level_
+  std::array<int, D> delay_{};           // levels an axis waits before it is split (thin axes)
+  std::array<int, D> bits_{}, offset_{};  // an axis's bits in a code at the current level, and where they start
+  std::array<double, D> scale_{};         // 2^-bits_: a sub-cell's edge over its cell's
   std::array<int, D> n_{};
   GridNeighbourhood<D> hood_;                   // the grid's cell arithmetic: wrap, stencils
   std::array<std::vector<double>, D> corners_;  // cell boundaries per axis, n + 1 each
@@ -452,21 +482,7 @@ PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uin
   return EbeidaSampler<D>(params, domain, seed).run();
 }
 
-namespace detail {
-template <int D>
-std::string quadtree_breakdown_reason(const Domain<D>& domain, double r) {
-  for (int a = 0; a < D; ++a)
-    if (domain.extent(a) < r / 16.0)
-      return "axis " + std::to_string(a) + " is " + format_number(domain.extent(a)) + " long for a radius of " +
-             format_number(r) + ": every level splits it too, doubling the sub-cells to no purpose; sample a " +
-             "domain this thin in fewer dimensions";
-  return "numerical breakdown";
-}
-}  // namespace detail
-
-#define PDS_INSTANTIATE(D)                                                                  \
-  template PointSet<D> ebeida<D>(const EbeidaParams&, const Domain<D>&, std::uint64_t); \
-  template std::string detail::quadtree_breakdown_reason<D>(const Domain<D>&, double);
+#define PDS_INSTANTIATE(D) template PointSet<D> ebeida<D>(const EbeidaParams&, const Domain<D>&, std::uint64_t);
 PDS_INSTANTIATE(1)
 PDS_INSTANTIATE(2)
 PDS_INSTANTIATE(3)

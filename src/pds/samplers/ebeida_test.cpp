@@ -95,6 +95,24 @@ TEST(Ebeida, ShortPeriodsFinishMaximal) {
   }
 }
 
+// Boxes far thinner than r along some axes: splitting those axes with the
+// others doubled the open sub-cells each level until the cap stopped the run
+// (the first box below: 81,920 sub-cells at level 7). They now wait until
+// the other axes' sub-cells are as thin, and the sets are maximal.
+TEST(Ebeida, ThinBoxesFinishMaximal) {
+  const double r = 0.01;
+  const auto tube = Domain<3>::box({{0.0, 0.0, 0.0}}, {{100.0, 1e-4, 1e-4}});
+  const auto in_tube = ebeida<3>({r}, tube, 1);
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(in_tube, tube, r));
+  EXPECT_NEAR(static_cast<double>(in_tube.size()), 0.7476 * 100.0 / r, 150.0);  // Renyi's parking constant
+  const auto slab = Domain<3>::box({{0.0, 0.0, 0.0}}, {{0.5, 0.5, 1e-6}});
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(ebeida<3>({r}, slab, 2), slab, r));
+  const auto strip = Domain<2>::box({{-3.0, 5.0}}, {{-2.0, 5.0 + 1e-7}});
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(ebeida<2>({r}, strip, 3), strip, r));
+  const auto thin4 = Domain<4>::box({{0.0, 0.0, 0.0, 0.0}}, {{1.0, 0.5, 1e-5, 1e-3}});
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(ebeida<4>({0.05}, thin4, 4), thin4, 0.05));
+}
+
 TEST(Ebeida, RejectsBadInput) {
   const auto domain = Domain<2>::unit();
   EXPECT_THROW(ebeida<2>({0.0}, domain, 1), InvalidArgument);

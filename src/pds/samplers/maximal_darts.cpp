@@ -175,6 +175,7 @@ class MaximalDartsSampler {
       for (int i = 0; i < n_[a]; ++i) corners_[a][i] = domain.lo[a] + domain.extent(a) * i / n_[a];
       corners_[a][n_[a]] = domain.hi[a];
     }
+    delay_ = detail::quadtree_axis_delays<D>(domain, n_, kMaxLevel);
     // The own cell, then every cell that can hold a sample closer than r to a
     // point of the cell, nearest first (a rejected dart stops early).
     std::vector<Coords> steps{Coords{}};
@@ -206,7 +207,7 @@ class MaximalDartsSampler {
         throw Failure("maximal-darts: " + std::to_string(open_units()) + " sub-cells of edge 2^-" +
                       std::to_string(kMaxLevel) + " cells still open after " + std::to_string(kMaxFinalRounds) +
                       " rounds of darts (numerical breakdown)");
-      level_scale_ = std::ldexp(1.0, -std::min(level_, kMaxLevel));
+      for (int a = 0; a < D; ++a) scale_[a] = std::ldexp(1.0, -axis_bits(a, level_));
       if (level_ > 0) {
         refine();
         if (open_units() == 0) break;
@@ -219,6 +220,10 @@ class MaximalDartsSampler {
   }
 
  private:
+  /// Times axis a has been halved at `level` (none while it waits; no more
+  /// past kMaxLevel, where units are kept as they are).
+  int axis_bits(int a, int level) const { return std::max(0, std::min(level, kMaxLevel) - delay_[a]); }
+
   std::size_t open_units() const {
     std::size_t n = 0;
     for (const Chunk& chunk : chunks_) n += chunk.units.size();
@@ -298,7 +303,7 @@ class MaximalDartsSampler {
     for (int a = 0; a < D; ++a) {
       const double cell_lo = corners_[a][static_cast<std::size_t>(c[a])];
       hi[a] = corners_[a][static_cast<std::size_t>(c[a]) + 1];
-      edge[a] = (hi[a] - cell_lo) * level_scale_;  // exact: a power of 2
+      edge[a] = (hi[a] - cell_lo) * scale_[a];  // exact: a power of 2
       lo[a] = cell_lo + static_cast<double>(code[a]) * edge[a];
     }
     for (int k = 0; k < darts; ++k) {
@@ -435,13 +440,21 @@ class MaximalDartsSampler {
     // Past the deepest level the units are kept as they are, less those whose
     // centre a disk covers.
     const bool final = level_ > kMaxLevel;
+    // The axes halved at this level; children along the others are not made
+    // (they start covered).
+    std::array<bool, D> halved;
+    unsigned waiting = 0;
+    for (int a = 0; a < D; ++a) halved[a] = axis_bits(a, level_) > axis_bits(a, parent_level);
+    for (int child = 0; child < kChildren; ++child)
+      for (int a = 0; a < D; ++a)
+        if ((child >> a) & 1 && !halved[a]) waiting |= 1u << child;
     // Only samples that can cover a whole child: along each axis the child's
     // far side lies at least a child edge (half of one in the same column)
     // beyond the gap between the cells. At level 1 that leaves the 3^D block.
     const Stencil cover = hood_.filter(near_, [&](const Coords& off) {
       double least2 = 0.0;
       for (int a = 0; a < D; ++a) {
-        const double edge = hood_.edge(a), child = edge * level_scale_;
+        const double edge = hood_.edge(a), child = edge * scale_[a];
         const double least = off[a] == 0 ? 0.5 * child : (std::abs(off[a]) - 1) * edge + child;
         least2 += least * least;
       }
@@ -456,7 +469,7 @@ class MaximalDartsSampler {
         std::array<double, D> cell_lo, edge;
         for (int a = 0; a < D; ++a) {
           cell_lo[a] = corners_[a][static_cast<std::size_t>(c[a])];
-          edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * level_scale_;
+          edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo[a]) * scale_[a];
         }
         near.clear();
         hood_.for_each_image(final ? near_ : cover, c, cell, [&](std::size_t n, const Coords& periods) {
@@ -487,12 +500,17 @@ class MaximalDartsSampler {
             if (!covered) children.push_back(parent);
             continue;
           }
-          // The children's faces along each axis, relative to the cell's corner.
+          // The children's faces along each axis, relative to the cell's corner
+          // (an axis not split: the parent's two faces, the second twice).
           std::array<std::array<double, 3>, D> face;
-          for (int a = 0; a < D; ++a)
+          std::array<std::uint32_t, D> first;
+          for (int a = 0; a < D; ++a) {
+            first[a] = halved[a] ? code[a] * 2 : code[a];
             for (int f = 0; f < 3; ++f)
-              face[a][f] = static_cast<double>(std::uint64_t{code[a]} * 2 + static_cast<std::uint64_t>(f)) * edge[a];
-          unsigned covered = 0;
+              face[a][f] = static_cast<double>(std::uint64_t{first[a]} + static_cast<std::uint64_t>(halved[a] ? f : std::min(f, 1))) *
+                           edge[a];
+          }
+          unsigned covered = waiting;
           for (const auto& d : near) {
             // Every child has the parent's centre (the middle faces) as a
             // corner: a disk that misses it covers no child.
@@ -519,7 +537,7 @@ class MaximalDartsSampler {
           for (int child = 0; child < kChildren; ++child) {
             if (covered & (1u << child)) continue;
             Unit unit{cell, {}};
-            for (int a = 0; a < D; ++a) unit.code[a] = code[a] * 2 + static_cast<std::uint32_t>((child >> a) & 1);
+            for (int a = 0; a < D; ++a) unit.code[a] = first[a] + static_cast<std::uint32_t>((child >> a) & 1);
             children.push_back(unit);
           }
         }
@@ -552,8 +570,7 @@ class MaximalDartsSampler {
     // leaves far more would keep growing 2^D-fold with each further one.
     if (open > 4 * state_.size() + 4096)
       throw Failure("maximal-darts: " + std::to_string(open) + " sub-cells still open at refinement level " +
-                    std::to_string(level_) + ", more than 4 per grid cell (" +
-                    detail::quadtree_breakdown_reason(domain_, r_) + ")");
+                    std::to_string(level_) + ", more than 4 per grid cell (numerical breakdown)");
   }
 
   const Domain<D>& domain_;
@@ -561,7 +578,8 @@ class MaximalDartsSampler {
   int threads_;
   bool fallback_ = false;
   int level_ = 0;
-  double level_scale_ = 1.0;  // 2^-level_
+  std::array<int, D> delay_{};  // levels an axis waits before it is split (detail::quadtree_axis_delays)
+  std::array<double, D> scale_{};  // a sub-cell's edge over its cell's along each axis, 2^-axis_bits
   std::uint64_t key_ = 0;
   Coords n_{};
   GridNeighbourhood<D> hood_;

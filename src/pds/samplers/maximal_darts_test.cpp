@@ -63,6 +63,22 @@ TEST(MaximalDarts, SameBytesForEveryThreadCount) {
 // ebeida (the same process by another evaluation order, itself tested against
 // Jones's sampler) within statistical error: count, nearest-neighbour
 // distances and the radially averaged power (annuli 1-47, Welch t each).
+// Boxes far thinner than r along some axes (as Ebeida.ThinBoxesFinishMaximal):
+// the thin axes wait to be split, the sets are maximal, and the thread count
+// still does not change a byte.
+TEST(MaximalDarts, ThinBoxesFinishMaximal) {
+  const double r = 0.01;
+  const auto tube = Domain<3>::box({{0.0, 0.0, 0.0}}, {{100.0, 1e-4, 1e-4}});
+  const auto in_tube = run<3>(r, tube, 1);
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(in_tube, tube, r));
+  EXPECT_NEAR(static_cast<double>(in_tube.size()), 0.7476 * 100.0 / r, 150.0);  // Renyi's parking constant
+  EXPECT_EQ(in_tube, run<3>(r, tube, 1, 3));
+  const auto slab = Domain<3>::box({{0.0, 0.0, 0.0}}, {{0.5, 0.5, 1e-6}});
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(run<3>(r, slab, 2), slab, r));
+  const auto strip = Domain<2>::box({{-3.0, 5.0}}, {{-2.0, 5.0 + 1e-7}});
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(run<2>(r, strip, 3), strip, r));
+}
+
 TEST(MaximalDarts, MatchesMaximalDartThrowing) {
   const double r = 0.02;
   const auto domain = Domain<2>::unit(true);
