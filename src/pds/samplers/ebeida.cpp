@@ -194,9 +194,7 @@ class EbeidaSampler {
     for (int a = 0; a < D; ++a) scale_[a] = std::ldexp(1.0, -bits_[a]);
   }
   /// Axis a's index in `code` at bits/offset.
-  static std::uint64_t index_of(Code code, int bits, int offset) {
-    return static_cast<std::uint64_t>((code >> offset) & ((Code{1} << bits) - 1));
-  }
+  static Code index_of(Code code, int bits, int offset) { return (code >> offset) & ((Code{1} << bits) - 1); }
 
   std::uint64_t level_key(int level) const { return mix64(mix64(seed_ ^ 0x6562656964614c76ULL) + mix64(level)); }
 
@@ -219,7 +217,7 @@ class EbeidaSampler {
     for (int a = 0; a < D; ++a) {
       const double cell_lo = corners_[a][static_cast<std::size_t>(c[a])];
       edge[a] = (corners_[a][static_cast<std::size_t>(c[a]) + 1] - cell_lo) * scale_[a];  // exact: a power of 2
-      lo[a] = cell_lo + static_cast<double>(index_of(code, bits_[a], offset_[a])) * edge[a];
+      lo[a] = cell_lo + static_cast<double>(static_cast<std::uint64_t>(index_of(code, bits_[a], offset_[a]))) * edge[a];
     }
   }
 
@@ -398,13 +396,13 @@ class EbeidaSampler {
         // The children's faces along each axis, relative to the cell's corner
         // (an axis not split: the parent's two faces, the second twice).
         std::array<std::array<double, 3>, D> face;
-        std::array<std::uint64_t, D> first;
+        std::array<Code, D> first;
         for (int a = 0; a < D; ++a) {
-          const std::uint64_t index = index_of(parent, parent_bits[a], parent_offset[a]);
+          const Code index = index_of(parent, parent_bits[a], parent_offset[a]);
           const bool split = bits_[a] > parent_bits[a];
           first[a] = split ? index * 2 : index;
           for (int f = 0; f < 3; ++f)
-            face[a][f] = static_cast<double>(first[a] + static_cast<std::uint64_t>(split ? f : std::min(f, 1))) * edge[a];
+            face[a][f] = static_cast<double>(static_cast<std::uint64_t>(first[a]) + (split ? f : std::min(f, 1))) * edge[a];
         }
         // A child is covered when its farthest corner is inside one disk: the
         // sum over axes of the larger squared distance to its two faces (the
@@ -428,7 +426,7 @@ class EbeidaSampler {
         for (int child = 0; child < kChildren; ++child) {
           if (covered.test(child)) continue;
           Code code = 0;
-          for (int a = 0; a < D; ++a) code |= Code{first[a] + static_cast<std::uint64_t>((child >> a) & 1)} << offset_[a];
+          for (int a = 0; a < D; ++a) code |= (first[a] + static_cast<unsigned>((child >> a) & 1)) << offset_[a];
           subs.push_back(code);
         }
       }
