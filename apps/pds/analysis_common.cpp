@@ -36,7 +36,9 @@ void add_generation_options(CLI::App& command, GenerationOptions& o, const Gener
     o.added.push_back(o.radius_option);
   }
   if (set.dim)
-    o.added.push_back(command.add_option("--dim,-d", o.domain.dim, help("Dimension (the range each method takes: pds methods)"))->capture_default_str());
+    o.added.push_back(
+        command.add_option("--dim,-d", o.domain.dim, help("Dimension (the range each method takes: pds methods)"))
+            ->capture_default_str());
   if (set.domain) add_domain_options(command, o.domain, false);
   o.added.push_back(
       command

@@ -61,12 +61,12 @@ template <int D>
 void require_radius_budget(const Domain<D>& domain, double r, std::uint64_t max_points) {
   require_radius(r);
   const double volume = sizing_volume(domain, r);
-  require_point_budget(packing_count(volume, r, D), D, max_points,
-                       "radius " + detail::format_number(r) + " over a domain of volume " +
-                           detail::format_number(domain.volume()) +
-                           (volume != domain.volume()
-                                ? " (" + detail::format_number(volume) + " with axes shorter than the radius counted as the radius)"
-                                : std::string()));
+  require_point_budget(
+      packing_count(volume, r, D), D, max_points,
+      "radius " + detail::format_number(r) + " over a domain of volume " + detail::format_number(domain.volume()) +
+          (volume != domain.volume()
+               ? " (" + detail::format_number(volume) + " with axes shorter than the radius counted as the radius)"
+               : std::string()));
 }
 
 }  // namespace pds

@@ -208,7 +208,8 @@ PointSet<D> dart_throwing(const DartThrowingParams& params, const SamplingConstr
   std::uint64_t failures = 0;
   // As the uniform loop reports: the count, or the count at rmin (an upper
   // bound) until the streak of misses takes over as the set fills.
-  const double expected = params.count ? static_cast<double>(wanted) : typical_count(sizing_volume(domain, set.rmin()), set.rmin(), D);
+  const double expected =
+      params.count ? static_cast<double>(wanted) : typical_count(sizing_volume(domain, set.rmin()), set.rmin(), D);
   ProgressReporter progress(params.progress, expected);
   while (set.generated() < wanted) {
     const auto placed = static_cast<double>(set.generated());

@@ -402,7 +402,8 @@ class EbeidaSampler {
           const bool split = bits_[a] > parent_bits[a];
           first[a] = split ? index * 2 : index;
           for (int f = 0; f < 3; ++f)
-            face[a][f] = static_cast<double>(static_cast<std::uint64_t>(first[a]) + (split ? f : std::min(f, 1))) * edge[a];
+            face[a][f] =
+                static_cast<double>(static_cast<std::uint64_t>(first[a]) + (split ? f : std::min(f, 1))) * edge[a];
         }
         // A child is covered when its farthest corner is inside one disk: the
         // sum over axes of the larger squared distance to its two faces (the
@@ -455,8 +456,8 @@ class EbeidaSampler {
   std::uint64_t seed_;
   double r2_, cover2_ = 0.0;
   int level_ = 0;
-  std::uint64_t key_ = 0;     // level_key(level_)
-  std::array<int, D> delay_{};           // levels an axis waits before it is split (thin axes)
+  std::uint64_t key_ = 0;                 // level_key(level_)
+  std::array<int, D> delay_{};            // levels an axis waits before it is split (thin axes)
   std::array<int, D> bits_{}, offset_{};  // an axis's bits in a code at the current level, and where they start
   std::array<double, D> scale_{};         // 2^-bits_: a sub-cell's edge over its cell's
   std::array<int, D> n_{};

@@ -507,7 +507,8 @@ class MaximalDartsSampler {
           for (int a = 0; a < D; ++a) {
             first[a] = halved[a] ? code[a] * 2 : code[a];
             for (int f = 0; f < 3; ++f)
-              face[a][f] = static_cast<double>(std::uint64_t{first[a]} + static_cast<std::uint64_t>(halved[a] ? f : std::min(f, 1))) *
+              face[a][f] = static_cast<double>(std::uint64_t{first[a]} +
+                                               static_cast<std::uint64_t>(halved[a] ? f : std::min(f, 1))) *
                            edge[a];
           }
           unsigned covered = waiting;
@@ -578,7 +579,7 @@ class MaximalDartsSampler {
   int threads_;
   bool fallback_ = false;
   int level_ = 0;
-  std::array<int, D> delay_{};  // levels an axis waits before it is split (detail::quadtree_axis_delays)
+  std::array<int, D> delay_{};     // levels an axis waits before it is split (detail::quadtree_axis_delays)
   std::array<double, D> scale_{};  // a sub-cell's edge over its cell's along each axis, 2^-axis_bits
   std::uint64_t key_ = 0;
   Coords n_{};
