@@ -91,7 +91,12 @@ if cmp -s "$tmp/generated.npy" "$tmp/whole.npy"; then ok; else bad "generate --u
 expect_exit 0 "" -- generate maximal-darts --unbounded --torus --bounds -3.5,2,27,19 -r 1 -s 5 \
   --region -3.5,2,27,19 -o "$tmp/gtorus.npy"
 if cmp -s "$tmp/gtorus.npy" "$tmp/torus.npy"; then ok; else bad "generate --unbounded --torus differs"; fi
+expect_exit 0 "" -- generate dart-throwing --unbounded -r 1 -s 5 --region 0,0,0,4,4,3 --dim 3 -o "$tmp/gcube.csv"
+if cmp -s "$tmp/gcube.csv" "$tmp/cube.csv"; then ok; else bad "generate dart-throwing --unbounded in 3D differs"; fi
 expect_exit 2 "taken by ebeida, maximal-darts and dart-throwing" -- generate bridson --unbounded -r 1 --region 0,0,1,1
+expect_exit 2 "--classes does not apply with --unbounded" -- generate dart-throwing --unbounded -r 1 --region 0,0,1,1 --classes 1,2
+expect_exit 2 "pds chunks -t" -- generate ebeida --unbounded -r 1 --region 0,0,1,1 -t 2
+expect_exit 2 "--bounds (the torus of --unbounded) needs 4" -- generate ebeida --unbounded -r 1 --region 0,0,1,1 --torus --bounds 0,0,0,9,9,9
 expect_exit 2 "--region needs --unbounded" -- generate ebeida -r 1 --region 0,0,1,1
 expect_exit 2 "needs --region" -- generate ebeida --unbounded -r 1
 expect_exit 2 "needs --radius" -- generate ebeida --unbounded --region 0,0,1,1

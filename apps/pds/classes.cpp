@@ -5,7 +5,6 @@
 
 #include "pds/error.h"
 #include "pds/io/point_file.h"
-#include "pds/limits.h"
 #include "pds/registry.h"
 #include "pds/samplers/multi_class.h"
 
@@ -30,14 +29,13 @@ void generate_classes(const CLI::App& command, const std::string& method, const 
     throw InvalidArgument("--classes is taken by dart-throwing only (Wei's multi-class dart throwing), not " + method);
   refuse_options(command,
                  {"--count", "--radius", "--density", "--radius-range", "--invert", "--mask", "--polygons", "--fixed",
-                  "--mesh", "--vertex-density", "--dtype", "--max-memory", "--unbounded", "--region"},
+                  "--mesh", "--vertex-density", "--dtype", "--max-memory"},
                  "--classes (the class radii size the set)");
   const std::map<std::string, double> params = parse_params(generation.params);
   for (const auto& entry : params)
     if (entry.first != "failures")
       throw InvalidArgument("--classes takes --param failures= only, not '" + entry.first + "'");
   validate_params(find_method(method), params);
-  for (const double r : o.radii) require_radius(r, "class radius");
   GenerateRequest request = generation_request(generation);
   request.params.clear();  // failures is the classes' own setting, read above
   MultiClassParams mc;
@@ -45,7 +43,7 @@ void generate_classes(const CLI::App& command, const std::string& method, const 
   mc.matrix = o.matrix;
   if (const auto it = params.find("failures"); it != params.end())
     mc.max_failures = static_cast<std::uint64_t>(it->second);
-  const ClassCloud set = generate_classes(mc, request);
+  const ClassCloud set = pds::generate_classes(mc, request);
   const int dim = set.points.dim;
   PointCloud table{dim + 1, {}};
   table.coords.reserve(set.classes.size() * static_cast<std::size_t>(dim + 1));

@@ -29,7 +29,7 @@ void generate_on_mesh(const CLI::App& command, const std::string& method, const 
                           method);
   refuse_options(command,
                  {"--dim", "--torus", "--bounds", "--density", "--radius-range", "--invert", "--mask", "--polygons",
-                  "--fixed", "--dtype", "--max-memory", "--unbounded", "--region"},
+                  "--fixed", "--dtype", "--max-memory"},
                  "--mesh (the mesh is the domain)");
   const bool by_count = generation.count_option && generation.count_option->count();
   const bool by_radius = generation.radius_option && generation.radius_option->count();

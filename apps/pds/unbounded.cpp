@@ -29,6 +29,7 @@ struct UnboundedOptions {
   std::uint64_t seed = 0;
   std::vector<double> region;  // x0,y0[,z0],x1,y1[,z1]
   std::vector<double> torus;   // the same, when the field lives on a torus
+  std::string torus_option = "--torus";  // where the torus came from, for messages
   double darts_per_cell = UnboundedParams{}.darts_per_cell;
   std::uint64_t max_points = kDefaultMaxPoints;
   double chunk = 0.0;  // pds chunks only
@@ -89,7 +90,7 @@ template <int D>
 UnboundedField<D> field_of(const UnboundedOptions& o) {
   const UnboundedParams params{.radius = o.radius, .darts_per_cell = o.darts_per_cell, .max_points = o.max_points};
   if (o.torus.empty()) return UnboundedField<D>(params, o.seed);
-  Domain<D> torus = box_of<D>(o.torus, "--torus");
+  Domain<D> torus = box_of<D>(o.torus, o.torus_option);
   torus.periodic = true;
   return UnboundedField<D>(params, o.seed, torus);
 }
@@ -163,7 +164,7 @@ void run_chunks(const UnboundedOptions& o, const ChunkTeam& team) {
   if (o.torus.empty()) {
     manifest["torus"] = nullptr;
   } else {
-    const Domain<D> torus = box_of<D>(o.torus, "--torus");
+    const Domain<D> torus = box_of<D>(o.torus, o.torus_option);
     manifest["torus"] = {{"lo", std::vector<double>(torus.lo.begin(), torus.lo.end())},
                          {"hi", std::vector<double>(torus.hi.begin(), torus.hi.end())}};
   }
@@ -286,11 +287,11 @@ void generate_unbounded(const CLI::App& command, const std::string& method, cons
   if (method != "ebeida" && method != "maximal-darts" && method != "dart-throwing")
     throw InvalidArgument("--unbounded is taken by ebeida, maximal-darts and dart-throwing (the field is maximal dart "
                           "throwing, their process), not " + method);
+  refuse_options(command, {"--threads"}, "--unbounded (pds chunks -t samples a region on several threads)");
   refuse_options(command,
                  {"--count", "--density", "--radius-range", "--invert", "--mask", "--polygons", "--fixed", "--mesh",
-                  "--vertex-density", "--classes", "--class-matrix", "--dtype", "--max-memory", "--param", "--threads"},
-                 "--unbounded (the field takes --radius, --seed, --region, --max-points, and --torus with --bounds; "
-                 "pds chunks samples a region on several threads)");
+                  "--vertex-density", "--classes", "--class-matrix", "--dtype", "--max-memory", "--param"},
+                 "--unbounded (the field takes --radius, --seed, --region, --max-points, and --torus with --bounds)");
   if (!(generation.radius_option && generation.radius_option->count()))
     throw InvalidArgument("--unbounded needs --radius (the field's minimum distance)");
   UnboundedOptions o;
@@ -308,6 +309,7 @@ void generate_unbounded(const CLI::App& command, const std::string& method, cons
     if (generation.domain.bounds.empty())
       throw InvalidArgument("--unbounded --torus needs --bounds: the torus the field lives on");
     o.torus = generation.domain.bounds;
+    o.torus_option = "--bounds (the torus of --unbounded)";
   } else if (!generation.domain.bounds.empty()) {
     throw InvalidArgument("--bounds with --unbounded is the torus of a periodic field and needs --torus; the box to "
                           "sample is --region");

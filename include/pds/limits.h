@@ -44,16 +44,20 @@ double packing_count(double volume, double r, int dim);
 /// for progress and memory, not a bound.
 double typical_count(double volume, double r, int dim);
 
-/// The volume to size a radius-r request by: the domain's, with every axis
-/// shorter than r counted as r long. A domain that thin along some axes holds
-/// far more points than its volume says (a 1000 x 1e-6 x 1e-6 box holds 10^5
-/// points at r = 0.01, its volume 1e-9 none); growing every axis by r would
-/// bound the count strictly, but 80-fold too high in the 8D unit box.
+/// The volume to size a radius-r request by: the domain's (box or torus),
+/// with every axis shorter than r counted as r long. A domain that thin along
+/// some axes holds far more points than its volume says (a 1000 x 1e-6 x
+/// 1e-6 box holds 10^5 points at r = 0.01, its volume 1e-9 none); growing
+/// every axis by r would bound the count strictly, but 80-fold too high in
+/// the 8D unit box.
+inline double sizing_volume(const double* lo, const double* hi, int dim, double r) {
+  double volume = 1.0;
+  for (int i = 0; i < dim; ++i) volume *= hi[i] - lo[i] < r ? r : hi[i] - lo[i];
+  return volume;
+}
 template <int D>
 double sizing_volume(const Domain<D>& domain, double r) {
-  double volume = 1.0;
-  for (int i = 0; i < D; ++i) volume *= domain.extent(i) < r ? r : domain.extent(i);
-  return volume;
+  return sizing_volume(domain.lo.data(), domain.hi.data(), D, r);
 }
 
 /// Checks r and that the densest packing at r fits the point budget.

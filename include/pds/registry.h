@@ -179,8 +179,10 @@ PointCloud generate(const std::string& method, const GenerateRequest& request);
 /// Several classes of samples (Wei's multi-class dart throwing,
 /// pds/samplers/multi_class.h) for the request's dimension, domain and seed:
 /// `points` of dimension request.dim and the class of each (0 to k - 1).
-/// The densest class's packing must fit request.max_points. The request's
-/// count, radius, parameters and constraints are not taken (InvalidArgument).
+/// The sum of the classes' densest packings, each at its own radius, must fit
+/// request.max_points. The request's count, radius, parameters, constraints,
+/// float32 and max_memory are not taken (InvalidArgument); it runs on one
+/// thread whatever request.threads says.
 struct ClassCloud {
   PointCloud points;
   std::vector<std::uint32_t> classes;

@@ -192,8 +192,17 @@ def generate_classes(
     array of shape (N,) with the class of each point (0 to k - 1). Every pair
     of points of classes a and b lies at least ``matrix[a][b]`` apart.
     """
-    radii_list = [float(r) for r in _np.atleast_1d(_np.asarray(radii, dtype=float))]
-    flat = [] if matrix is None else [float(v) for v in _np.asarray(matrix, dtype=float).ravel()]
+    radii_array = _np.asarray(radii, dtype=float)
+    if radii_array.ndim > 1:
+        raise ValueError(f"radii must be a sequence of numbers, got an array of shape {radii_array.shape}")
+    radii_list = [float(r) for r in _np.atleast_1d(radii_array)]
+    flat = []
+    if matrix is not None:
+        m = _np.asarray(matrix, dtype=float)
+        k = len(radii_list)
+        if m.shape != (k, k):
+            raise ValueError(f"matrix must have shape ({k}, {k}) for {k} radii, got {m.shape}")
+        flat = [float(v) for v in m.ravel()]
     lo, hi = _bounds(bounds, dim)
     return _pds.generate_classes(radii_list, flat, int(dim), lo, hi, bool(torus), _uint(seed, "seed"),
                                  _uint(max_points, "max_points"), _uint(failures, "failures"))

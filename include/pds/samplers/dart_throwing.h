@@ -15,7 +15,7 @@ namespace pds {
 
 /// Default cap on consecutive rejected darts, per unit of the packing bound:
 /// the loop stops after max(kDartMinFailures, kDartFailuresPerPoint *
-/// packing_count(volume, radius)) rejections in a row.
+/// packing_count(sizing_volume(domain, radius), radius)) rejections in a row.
 inline constexpr std::uint64_t kDartMinFailures = 10'000;
 inline constexpr std::uint64_t kDartFailuresPerPoint = 1;
 

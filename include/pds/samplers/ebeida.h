@@ -46,9 +46,10 @@ namespace detail {
 /// along an axis shorter than the cell's edge elsewhere; splitting that axis
 /// with the others would double the open sub-cells each level to no purpose
 /// (a 100 x 1e-4 x 1e-4 box at r = 0.01 opened 81,920 at level 7), so it
-/// waits until the other axes' sub-cells are as thin: a level's sub-cells stay
-/// within a factor 2 of cubic. Cells of two or more along every axis are within
-/// that factor already (their edges lie in (r / (2 sqrt D), r / sqrt D]): no delay.
+/// waits until the other axes' sub-cells are as thin, from when on a level's
+/// sub-cells stay within a factor 2 of cubic. Cells of two or more along every
+/// axis are within that factor already (their edges lie in (r / (2 sqrt D),
+/// r / sqrt D]): no delay.
 template <int D>
 std::array<int, D> quadtree_axis_delays(const Domain<D>& domain, const std::array<int, D>& n, int max_level) {
   double widest = 0.0;

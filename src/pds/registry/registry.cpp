@@ -253,9 +253,8 @@ double peak_memory_estimate(const Method& method, const GenerateRequest& request
   if (radius) {
     std::vector<double> lo, hi;
     request.bounds(lo, hi);
-    double volume = 1.0;
-    for (std::size_t a = 0; a < lo.size(); ++a) volume *= hi[a] - lo[a];
-    const double typical = typical_count(volume, *radius, request.dim);
+    const double typical =
+        typical_count(sizing_volume(lo.data(), hi.data(), request.dim, *radius), *radius, request.dim);
     points = request.count ? std::min(points, typical) : typical;  // a count stops the run
   }
   points += static_cast<double>(request.constraints.fixed.size());
@@ -273,16 +272,20 @@ ClassCloud generate_classes(const MultiClassParams& params, const GenerateReques
     throw InvalidArgument("classes: the class radii size the set; a count or a radius is not taken");
   if (!request.params.empty())
     throw InvalidArgument("classes: method parameters are not taken (failures is the classes' own setting)");
-  if (request.constraints.active() || request.float32)
-    throw InvalidArgument("classes: a density, a mask, fixed points or float32 are not taken");
+  if (request.constraints.active() || request.float32 || request.max_memory > 0)
+    throw InvalidArgument("classes: a density, a mask, fixed points, float32 or a memory budget are not taken");
   if (params.radii.empty()) throw InvalidArgument("classes: need at least one class radius");
   for (const double r : params.radii) require_radius(r, "class radius");
   ClassCloud out;
   out.points = visit_dim<kMinDim, kMaxDim>(request.dim, [&](auto d) {
     constexpr int D = decltype(d)::value;
     const Domain<D> domain = request.domain<D>();
-    // The densest class bounds the count; refuse what could not fit.
-    require_radius_budget(domain, *std::min_element(params.radii.begin(), params.radii.end()), request.max_points);
+    // Each class alone is a Poisson disk set at its own radius, whatever the
+    // cross distances: the sum of their packings bounds the count.
+    double most = 0.0;
+    for (const double r : params.radii) most += packing_count(sizing_volume(domain, r), r, D);
+    require_point_budget(most, D, request.max_points,
+                         std::to_string(params.radii.size()) + " classes (the densest packing of each at its radius)");
     MultiClassSet<D> set = multi_class<D>(params, domain, request.seed);
     out.classes = std::move(set.classes);
     return PointCloud::from<D>(set.points);

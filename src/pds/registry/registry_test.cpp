@@ -112,31 +112,58 @@ TEST(Registry, RefusesRequestsBeyondThePointBudgetBeforeAllocating) {
 
 TEST(Registry, ThinDomainsAreSizedByTheirAxesNotTheirVolume) {
   // A 1000 x 1e-6 x 1e-6 box has volume 1e-9 but holds ~10^5 points at
-  // r = 0.01 along its long axis: no radius method may take it under a cap of
-  // 1500 (CI's fuzzer found ebeida running for minutes on such a box; wei and
-  // dart-throwing returned 7 * 10^4 points).
+  // r = 0.01 along its long axis: every radius method must refuse it under a
+  // cap of 1500 (CI's fuzzer found ebeida running past its time limit on a box
+  // like it; wei and dart-throwing returned 7 * 10^4 points).
   GenerateRequest r = with_radius(0.01);
   r.dim = 3;
   r.lo = {0, 0, 0};
   r.hi = {1000, 1e-6, 1e-6};
   r.max_points = 1500;
-  int checked = 0;
-  for (const Method& m : methods()) {
-    if (!m.takes_radius || !m.dims.contains(3)) continue;
-    try {
-      const PointCloud cloud = generate(m.name, r);
-      EXPECT_LE(cloud.size(), r.max_points) << m.name;
-    } catch (const InvalidArgument&) {
-      ++checked;
+  int methods_checked = 0;
+  for (const Method& m : methods())
+    if (m.takes_radius && m.dims.contains(3)) {
+      expect_rejected(m.name, r, "with axes shorter than the radius counted as the radius");
+      ++methods_checked;
     }
-  }
-  EXPECT_GE(checked, 5);
-  expect_rejected("ebeida", r, "with axes shorter than the radius counted as the radius");
+  EXPECT_GE(methods_checked, 6);
+  // The memory estimate counts them too (--max-memory refused nothing here).
+  EXPECT_GT(peak_memory_estimate(find_method("dart-throwing"), r), 1e6);
   // The same box, short enough to fit the cap, is sampled along its length.
   r.hi = {1, 1e-6, 1e-6};
   const PointCloud line = generate("dart-throwing", r);
   EXPECT_GT(line.size(), 40u);
   EXPECT_LE(line.size(), 101u);
+  // A count in such a box becomes a radius sized by its length (the volume
+  // alone gave r = 1.4e-4 for 100 points: Bridson needed 1.4 GB).
+  GenerateRequest counted;
+  counted.dim = 3;
+  counted.lo = {0, 0, 0};
+  counted.hi = {100, 1e-6, 1e-6};
+  counted.count = 100;
+  EXPECT_EQ(generate("bridson", counted).size(), 100u);
+  EXPECT_GT(*size_request(find_method("ebeida"), counted).radius, 0.5);
+}
+
+// Each class is a Poisson disk set at its own radius whatever the cross
+// distances, so the classes' packings add up: four classes at 0.01 apart
+// from themselves and 0.001 from each other returned 27,540 points under a
+// cap of 14,000 when only the densest class was counted.
+TEST(Registry, ClassesAreBudgetedTogether) {
+  MultiClassParams params;
+  params.radii = {0.01, 0.01, 0.01, 0.01};
+  params.matrix.assign(16, 0.001);
+  for (int c = 0; c < 4; ++c) params.matrix[static_cast<std::size_t>(c * 5)] = 0.01;
+  GenerateRequest r;
+  r.max_points = 14000;
+  try {
+    generate_classes(params, r);
+    ADD_FAILURE() << "four classes accepted under a cap of one class's packing";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("4 classes"), std::string::npos) << e.what();
+  }
+  r.count = 10;
+  EXPECT_THROW(generate_classes(params, r), InvalidArgument);
 }
 
 TEST(Registry, RejectsUnknownMethodParameters) {

@@ -413,7 +413,12 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, st
   // and the grid still decides every candidate.
   std::array<bool, D> flat{};
   bool any_flat = false;
-  for (int i = 0; i < D && !Periodic; ++i) any_flat |= flat[i] = domain.extent(i) < radius;
+  if constexpr (!Periodic) {
+    for (int i = 0; i < D; ++i) {
+      flat[i] = domain.extent(i) < radius;
+      any_flat = any_flat || flat[i];
+    }
+  }
   Rng flat_rng(seed, {0x666c6174 /* "flat" */});
   std::size_t cell = 0;
   const Point<D> first = uniform_point(rng, domain);

@@ -61,7 +61,9 @@
 namespace pds {
 namespace {
 
-// A sub-cell's position in its cell: D coordinates of `level` bits each.
+// A sub-cell's position in its cell: D coordinates, axis a of `level` bits
+// less its delay (detail::quadtree_axis_delays; none but on thin axes), each
+// after the bits of the axes before it.
 using Code = u128;
 // Deepest level: 63 in 2D, 41 in 3D (codes of up to 126 bits), sub-cells of edge below 1e-12 r,
 // the slack of the coverage test. A Voronoi vertex of the samples at distance r - delta from
@@ -334,7 +336,8 @@ class EbeidaSampler {
   }
 
   /// Splits the open sub-cells of every open cell into 2^D children for the
-  /// level now starting, keeping the children that no single disk covers.
+  /// level now starting (halves along the axes whose delay is over; one
+  /// along the others), keeping the children that no single disk covers.
   void refine(double start) {
     std::vector<Code> subs;
     std::vector<Open> open;

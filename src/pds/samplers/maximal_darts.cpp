@@ -79,7 +79,8 @@ namespace {
 // conflicts few; these only change the speed, never the distribution.
 constexpr double kFirstLevelWindows[] = {0.125, 0.125, 0.25, 0.5, 0.5, 0.5};
 constexpr double kLevelWindows[] = {0.5};
-// Sub-cells are split down to edge 2^-31 cells (the codes' 32 bits); those
+// Sub-cells are split down to edge 2^-31 cells (the codes' 32 bits; a thin
+// axis, split later, to its delay's fewer bits); those
 // still open then are dropped when their centre lies within r plus half a
 // diagonal of a sample (every point within r + 5e-10 r of it), the others
 // (whose inscribed ball is uncovered) take darts without further splitting,
@@ -133,7 +134,8 @@ class MaximalDartsSampler {
     bool border;          // the cell's stencil crosses the grid's edge
   };
 
-  /// An open sub-cell: its cell and its position there, `level` bits an axis.
+  /// An open sub-cell: its cell and its position there, axis_bits(a, level)
+  /// bits along axis a.
   struct Unit {
     std::uint32_t cell;  // kDead once a sample covers it whole
     std::array<std::uint32_t, D> code;
@@ -204,8 +206,8 @@ class MaximalDartsSampler {
     if (fallback_) return ebeida<D>({r_, std::numeric_limits<std::uint64_t>::max()}, domain_, seed);
     for (level_ = 0;; ++level_) {
       if (level_ > kMaxLevel + kMaxFinalRounds)
-        throw Failure("maximal-darts: " + std::to_string(open_units()) + " sub-cells of edge 2^-" +
-                      std::to_string(kMaxLevel) + " cells still open after " + std::to_string(kMaxFinalRounds) +
+        throw Failure("maximal-darts: " + std::to_string(open_units()) + " sub-cells still open after " +
+                      std::to_string(kMaxLevel) + " levels of refinement and " + std::to_string(kMaxFinalRounds) +
                       " rounds of darts (numerical breakdown)");
       for (int a = 0; a < D; ++a) scale_[a] = std::ldexp(1.0, -axis_bits(a, level_));
       if (level_ > 0) {
@@ -433,7 +435,8 @@ class MaximalDartsSampler {
     return !blocked;
   }
 
-  /// Splits every open unit into 2^D children for the level now starting and
+  /// Splits every open unit into 2^D children for the level now starting
+  /// (halves along the axes whose delay is over; one along the others) and
   /// keeps those that no single disk covers; a cell left with none is closed.
   void refine() {
     const int parent_level = level_ - 1;
@@ -513,8 +516,9 @@ class MaximalDartsSampler {
           }
           unsigned covered = waiting;
           for (const auto& d : near) {
-            // Every child has the parent's centre (the middle faces) as a
-            // corner: a disk that misses it covers no child.
+            // Every child has the point of the middle faces as a corner (the
+            // parent's centre; along an axis not split, its upper face): a
+            // disk that misses it covers no child.
             std::array<double, D> q1;
             double centre2 = 0.0;
             for (int a = 0; a < D; ++a) {

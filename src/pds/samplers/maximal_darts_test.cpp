@@ -59,10 +59,6 @@ TEST(MaximalDarts, SameBytesForEveryThreadCount) {
   EXPECT_GE(min_distance(one, domain).distance, 0.003);
 }
 
-// Unbiased: the process is maximal dart throwing exactly, so it must match
-// ebeida (the same process by another evaluation order, itself tested against
-// Jones's sampler) within statistical error: count, nearest-neighbour
-// distances and the radially averaged power (annuli 1-47, Welch t each).
 // Boxes far thinner than r along some axes (as Ebeida.ThinBoxesFinishMaximal):
 // the thin axes wait to be split, the sets are maximal, and the thread count
 // still does not change a byte.
@@ -79,6 +75,10 @@ TEST(MaximalDarts, ThinBoxesFinishMaximal) {
   EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(run<2>(r, strip, 3), strip, r));
 }
 
+// Unbiased: the process is maximal dart throwing exactly, so it must match
+// ebeida (the same process by another evaluation order, itself tested against
+// Jones's sampler) within statistical error: count, nearest-neighbour
+// distances and the radially averaged power (annuli 1-47, Welch t each).
 TEST(MaximalDarts, MatchesMaximalDartThrowing) {
   const double r = 0.02;
   const auto domain = Domain<2>::unit(true);

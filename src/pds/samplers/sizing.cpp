@@ -15,7 +15,19 @@ template <int D>
 double radius_for_count(std::uint64_t count, const Domain<D>& domain, double rho) {
   if (count == 0) throw InvalidArgument("count must be at least 1, got 0");
   if (!(rho > 0.0 && rho <= 1.0)) throw InvalidArgument("rho must be in (0, 1], got " + detail::format_number(rho));
-  return 2.0 * rho * max_packing_radius(domain.volume(), static_cast<std::size_t>(count), D);
+  // In a domain thinner than the radius along some axes the volume to size
+  // by grows with the radius (sizing_volume): iterate from the plain volume
+  // upward; the radius rises monotonically to the fixed point.
+  const auto radius_for = [&](double volume) {
+    return 2.0 * rho * max_packing_radius(volume, static_cast<std::size_t>(count), D);
+  };
+  double r = radius_for(domain.volume());
+  for (int step = 0; step < 200; ++step) {
+    const double next = radius_for(sizing_volume(domain, r));
+    if (!(next > r * (1.0 + 1e-12))) break;
+    r = next;
+  }
+  return r;
 }
 
 template <int D>

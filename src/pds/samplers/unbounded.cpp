@@ -639,7 +639,7 @@ UnboundedField<D>::UnboundedField(const UnboundedParams& params, std::uint64_t s
     if (!(n >= 5.0 && n <= kMaxCellIndex))
       throw InvalidArgument("torus: axis " + std::to_string(a) + " of extent " + detail::format_number(torus.extent(a)) +
                             " holds " + detail::format_number(n) + " cells of edge radius/sqrt(D) = " +
-                            detail::format_number(edges_[a]) + "; it needs 5 to 2^40 (use ebeida for small tori)");
+                            detail::format_number(edges_[a]) + "; it needs 5 to 2^40 (sample a small torus with ebeida, not the unbounded field)");
     cells_[a] = static_cast<std::int64_t>(n);
     edges_[a] = torus.extent(a) / n;  // >= radius/sqrt(D), below 1.25 of it (n >= 5): the reach still covers r
   }
