@@ -61,6 +61,10 @@ TEST(SizingVolume, AxesShorterThanTheRadiusCountAsTheRadius) {
   EXPECT_GT(r, 0.5);
   EXPECT_LT(r, 2.0);
   EXPECT_EQ(radius_for_count(100, Domain<2>::unit(), 0.75), 2.0 * 0.75 * max_packing_radius(1.0, 100, 2));
+  // Past the longest axis nothing is left to size by: the volume's answer
+  // stands (one point in the 8D unit box; the fixed point has none there).
+  EXPECT_EQ(radius_for_count(1, Domain<8>::unit(), 0.75), 2.0 * 0.75 * max_packing_radius(1.0, 1, 8));
+  EXPECT_LE(radius_for_count(1, Domain<3>::box({0, 0, 0}, {2, 1e-3, 1e-3}), 0.75), 2.0);
 }
 
 }  // namespace

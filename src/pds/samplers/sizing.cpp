@@ -1,5 +1,6 @@
 #include "pds/samplers/sizing.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -17,13 +18,17 @@ double radius_for_count(std::uint64_t count, const Domain<D>& domain, double rho
   if (!(rho > 0.0 && rho <= 1.0)) throw InvalidArgument("rho must be in (0, 1], got " + detail::format_number(rho));
   // In a domain thinner than the radius along some axes the volume to size
   // by grows with the radius (sizing_volume): iterate from the plain volume
-  // upward; the radius rises monotonically to the fixed point.
+  // upward; the radius rises monotonically to the fixed point. Past the
+  // longest axis no axis is left to size by (the domain holds about one
+  // point), so the radius stops there.
   const auto radius_for = [&](double volume) {
     return 2.0 * rho * max_packing_radius(volume, static_cast<std::size_t>(count), D);
   };
+  double longest = 0.0;
+  for (int a = 0; a < D; ++a) longest = std::max(longest, domain.extent(a));
   double r = radius_for(domain.volume());
-  for (int step = 0; step < 200; ++step) {
-    const double next = radius_for(sizing_volume(domain, r));
+  for (int step = 0; step < 200 && r < longest; ++step) {
+    const double next = std::min(radius_for(sizing_volume(domain, r)), longest);
     if (!(next > r * (1.0 + 1e-12))) break;
     r = next;
   }
