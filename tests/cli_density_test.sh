@@ -60,6 +60,7 @@ expect_exit 2 "does not take a density, a mask or fixed points" -- generate sobo
 expect_exit 2 "--invert needs --density" -- generate bridson --radius 0.1 --invert
 expect_exit 2 "float32 output is not taken" -- generate bridson --mask "$in/mask.png" --radius 0.1 --dtype float32
 expect_exit 2 "surface=1 is not taken" -- generate bridson --mask "$in/mask.png" --radius 0.1 --param surface=1
+expect_exit 2 "scipy=1 is not taken" -- generate bridson --mask "$in/mask.png" --radius 0.1 --param scipy=1
 expect_exit 2 "all-pairs=1 is not taken" -- generate dart-throwing --mask "$in/mask.png" --radius 0.1 --param all-pairs=1
 echo '{"type": "Point", "coordinates": [0, 0]}' >"$tmp/pt.geojson"
 expect_exit 2 "is not a Polygon or MultiPolygon" -- generate bridson --polygons "$tmp/pt.geojson" --radius 0.1

@@ -23,9 +23,12 @@ def test_fill_space_keeps_the_radius_inside_the_unit_cube(d, radius):
     assert sample.shape[1] == d and sample.dtype == np.float64
     assert np.all(sample >= 0) and np.all(sample < 1)
     assert min_distance(sample) >= radius
-    # Full: about as many points as SciPy's own engine puts there (same algorithm).
-    theirs = scipy_qmc.PoissonDisk(d, radius=radius, seed=1).fill_space()
-    assert 0.85 < len(sample) / len(theirs) < 1.2
+    # Full: as many points as SciPy's own engine puts there (its loop, so its
+    # law: over seeds 1-8 the means agree within a few per cent; Bridson's
+    # loop packs more, bridson_test.cpp tells the two apart over 40 seeds).
+    ours = np.mean([len(qmc.PoissonDisk(d, radius=radius, seed=s).fill_space()) for s in range(1, 9)])
+    theirs = np.mean([len(scipy_qmc.PoissonDisk(d, radius=radius, seed=s).fill_space()) for s in range(1, 9)])
+    assert abs(ours / theirs - 1) < 0.03
 
 
 @pytest.mark.parametrize("d,radius", [(2, 0.05), (3, 0.15)])
@@ -38,7 +41,7 @@ def test_surface_candidates_give_a_denser_set_as_scipys(d, radius):
     theirs = scipy_qmc.PoissonDisk(d, radius=radius, hypersphere="surface", seed=1).fill_space()
     assert 0.85 < len(dense) / len(theirs) < 1.2
     assert len(dense) > 1.15 * len(sparse)
-    same = pds.generate("bridson", radius=radius, dim=d, seed=1, surface=1)
+    same = pds.generate("bridson", radius=radius, dim=d, seed=1, surface=1, scipy=1)
     assert same.tobytes() == dense.tobytes()
     with pytest.raises(ValueError, match="surface"):
         qmc.PoissonDisk(2, radius=0.05, hypersphere="surface", method="ebeida")
@@ -79,13 +82,16 @@ def test_reset_gives_the_same_samples_again():
 
 def test_seed_forms():
     assert qmc.PoissonDisk(2, radius=0.05, seed=12).fill_space().tobytes() == pds.generate(
-        "bridson", radius=0.05, seed=12
+        "bridson", radius=0.05, seed=12, scipy=1
     ).tobytes()
     g1, g2 = np.random.default_rng(3), np.random.default_rng(3)
     assert qmc.PoissonDisk(2, seed=g1).fill_space().tobytes() == qmc.PoissonDisk(2, seed=g2).fill_space().tobytes()
     assert qmc.PoissonDisk(2, seed=np.random.RandomState(1)).random(3).shape == (3, 2)
     assert qmc.PoissonDisk(2, seed=np.random.SeedSequence(5)).random(3).shape == (3, 2)
-    assert qmc.PoissonDisk(2, rng=np.uint64(5)).fill_space().tobytes() == pds.generate("bridson", radius=0.05, seed=5).tobytes()
+    assert (
+        qmc.PoissonDisk(2, rng=np.uint64(5)).fill_space().tobytes()
+        == pds.generate("bridson", radius=0.05, seed=5, scipy=1).tobytes()
+    )
     # None: fresh entropy each time.
     assert qmc.PoissonDisk(2).fill_space().tobytes() != qmc.PoissonDisk(2).fill_space().tobytes()
     with pytest.raises(ValueError):
@@ -98,7 +104,7 @@ def test_bounds_and_ncandidates():
     engine = qmc.PoissonDisk(2, radius=0.1, l_bounds=[-2, 10], u_bounds=[1, 12], ncandidates=8, seed=2)
     s = engine.fill_space()
     assert np.all(s >= [-2, 10]) and np.all(s < [1, 12]) and min_distance(s) >= 0.1
-    assert s.tobytes() == pds.generate("bridson", radius=0.1, bounds=[-2, 10, 1, 12], seed=2, k=8).tobytes()
+    assert s.tobytes() == pds.generate("bridson", radius=0.1, bounds=[-2, 10, 1, 12], seed=2, k=8, scipy=1).tobytes()
 
 
 def test_other_methods():

@@ -27,6 +27,14 @@ struct BridsonParams {
   /// the radius of one other, a denser set (2D torus, r = 0.02: 2,031
   /// points at relative radius 0.84 against 1,536 at 0.73).
   bool surface = false;
+  /// SciPy's loop (scipy.stats.qmc.PoissonDisk) instead of Bridson's: a
+  /// picked active sample leaves the pool at once, after exactly k
+  /// candidates uniform in the ball of radius 2r (on the sphere with
+  /// `surface`), and every free one of them is kept. Bridson's stops at the
+  /// first free candidate and keeps the sample active until k fail in a row.
+  /// SciPy's law, fewer candidates (2D: k 3/4 tried a sample against about
+  /// 1.2 k), slightly fewer samples.
+  bool scipy = false;
 };
 
 /// The candidates' sphere with BridsonParams::surface, in radii: just beyond

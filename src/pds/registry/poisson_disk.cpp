@@ -134,6 +134,9 @@ const Method& bridson_method() {
       .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
                  {"surface", 0, 0, 1, true,
                   "1: candidates on the sphere of radius 1.001 r, not in the annulus [r, 2r] (denser)"},
+                 {"scipy", 0, 0, 1, true,
+                  "1: SciPy's loop: a picked sample tries exactly k candidates in the ball of radius 2r once, "
+                  "keeping every free one (faster, SciPy's law)"},
                  {"rho", kBridsonCountRho, 0.01, 1, false,
                   "relative radius that sets the radius for --count without --radius"}},
       .run =
@@ -142,9 +145,12 @@ const Method& bridson_method() {
               BridsonParams params;
               params.k = static_cast<int>(r.param("k", 30));
               params.surface = r.param("surface", 0) != 0;
+              params.scipy = r.param("scipy", 0) != 0;
               params.count = r.count;
               if (r.constraints.active() && params.surface)
                 throw InvalidArgument("bridson: surface=1 is not taken with a density, a mask or fixed points");
+              if (r.constraints.active() && params.scipy)
+                throw InvalidArgument("bridson: scipy=1 is not taken with a density, a mask or fixed points");
               return run_radius_method(
                   r, domain, params, r.param("rho", kBridsonCountRho),
                   [&](const auto& p) { return bridson(p, domain, r.seed); },

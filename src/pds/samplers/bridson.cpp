@@ -11,6 +11,10 @@
 // nearest periodic image; in a box candidates outside are discarded (they
 // count towards k).
 //
+// SciPy's loop (BridsonParams::scipy, docs/bridson.md "SciPy's loop"): a
+// picked sample leaves the pool at once after exactly k candidates in the ball
+// of radius 2r, every free one kept; those inside r are only counted.
+//
 // Guarantees: minimum distance >= r in the exact arithmetic of
 // Domain::distance2 (the same formula, so the all-pairs oracle agrees to the
 // last bit); samples in [lo, hi); same seed, same points. Near-maximal, not
@@ -327,14 +331,15 @@ class BridsonGrid {
 // instead of one after the other.
 // With `surface` each accepted offset is scaled onto the sphere of radius
 // kSurfaceRadius r (its direction is uniform, as that of any uniform point of
-// the annulus is).
-template <int D>
+// the annulus is). Bits 32 (SciPy's loop) takes two coordinates from a draw.
+template <int D, int Bits>
 class AnnulusOffsets {
+  static_assert(Bits == 53 || Bits == 32);
  public:
   AnnulusOffsets(double r, bool surface, std::uint64_t seed)
       : inner2_(r * r),
         outer2_(4.0 * r * r),
-        step_(2.0 * r * 0x1.0p-52),
+        step_(2.0 * r * (Bits == 53 ? 0x1.0p-52 : 0x1.0p-31)),
         sphere_(surface ? kSurfaceRadius * r : 0.0),
         streams_(make_streams(seed, std::make_index_sequence<D>())) {}
 
@@ -347,22 +352,44 @@ class AnnulusOffsets {
   void refill() {
     std::size_t n = 0;
     while (n < kBatch) {
-      Point<D> v;
-      double s = 0.0;
-      for (int i = 0; i < D; ++i) {
-        // Uniform in [-2r, 2r) on a grid of 2r 2^-52: the top 53 bits as a
-        // signed value times `step_` (one rounding, as (value 2^-52) 2r has).
-        v[i] = static_cast<double>(static_cast<std::int64_t>(streams_[i].next()) >> 11) * step_;
-        s += v[i] * v[i];
+      if constexpr (Bits == 53) {
+        Point<D> v;
+        for (int i = 0; i < D; ++i) {
+          // Uniform in [-2r, 2r) on a grid of 2r 2^-52: the top 53 bits as a
+          // signed value times `step_` (one rounding, as (value 2^-52) 2r has).
+          v[i] = static_cast<double>(static_cast<std::int64_t>(streams_[i].next()) >> 11) * step_;
+        }
+        n += keep(v, n);
+      } else {
+        // Two draws a number: the low and the high 32 bits as signed values
+        // on a grid of 2r 2^-31.
+        std::array<std::uint64_t, D> words;
+        for (int i = 0; i < D; ++i) words[i] = streams_[i].next();
+        for (int half = 0; half < 2; ++half) {
+          Point<D> v;
+          for (int i = 0; i < D; ++i) {
+            const int j = half * D + i;
+            const auto bits = static_cast<std::uint32_t>(words[static_cast<std::size_t>(j / 2)] >> (32 * (j % 2)));
+            v[i] = static_cast<double>(static_cast<std::int32_t>(bits)) * step_;
+          }
+          n += keep(v, n);
+        }
       }
-      if (sphere_ > 0.0) {
-        const double scale = sphere_ / std::sqrt(std::max(s, inner2_));
-        for (int i = 0; i < D; ++i) v[i] *= scale;
-      }
-      batch_[n] = v;
-      n += static_cast<std::size_t>((s >= inner2_) & (s <= outer2_));
     }
     next_ = 0;
+  }
+
+  // Writes v (or its image on the sphere) to slot n; 1 if it is kept (in
+  // the annulus), 0 to be overwritten.
+  [[gnu::always_inline]] std::size_t keep(Point<D> v, std::size_t n) {
+    double s = 0.0;
+    for (int i = 0; i < D; ++i) s += v[i] * v[i];
+    if (sphere_ > 0.0) {
+      const double scale = sphere_ / std::sqrt(std::max(s, inner2_));
+      for (int i = 0; i < D; ++i) v[i] *= scale;
+    }
+    batch_[n] = v;
+    return static_cast<std::size_t>((s >= inner2_) & (s <= outer2_));
   }
 
   template <std::size_t... Axis>
@@ -374,7 +401,7 @@ class AnnulusOffsets {
   double inner2_, outer2_, step_, sphere_;
   std::array<Rng, D> streams_;
   std::size_t next_ = kBatch;
-  std::array<Point<D>, kBatch + 1> batch_;  // one spare slot for the last rejected draw
+  std::array<Point<D>, kBatch + 2> batch_;  // spare slots for the last rejected draws
 };
 
 // From 4 dimensions the specialised grid's block of (2 sqrt(D) + 1)^D cells
@@ -395,8 +422,29 @@ class ConflictGrid {
   double radius_;
 };
 
-template <int D, bool Periodic>
-PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, std::uint64_t seed) {
+// How many of k points uniform in the ball of radius 2r lie outside the ball
+// of radius r: k groups of D random bits, those not all zero.
+template <int D>
+int annulus_hits(int k, Rng& rng) {
+  int hits = 0;
+  std::uint64_t bits = 0;
+  int left = 0;
+  for (int j = 0; j < k; ++j) {
+    if (left < D) {
+      bits = rng.next();
+      left = 64;
+    }
+    hits += (bits & ((std::uint64_t{1} << D) - 1)) != 0;
+    bits >>= D;
+    left -= D;
+  }
+  return hits;
+}
+
+template <int D, bool Periodic, bool Scipy>
+PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& params, std::uint64_t seed) {
+  const int k = params.k;
+  const bool surface = params.surface;
   std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius);
   Rng rng(seed);
   bool short_reach = true;
@@ -405,7 +453,7 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, st
   // The active list holds coordinates, not indices: one memory access less
   // for each random pick.
   PointSet<D> active;
-  AnnulusOffsets<D> offsets(radius, surface, seed);
+  AnnulusOffsets<D, Scipy ? 32 : 53> offsets(radius, surface, seed);
   // Along an axis of a box shorter than r an annulus offset leaves the box
   // almost always (a 1 x 1 x 0.001 slab at r = 0.01 grew 4 points): there
   // candidates take a uniform coordinate instead, from a stream of their own
@@ -426,35 +474,68 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, st
   grid.insert(first, cell);
   points.push_back(first);
   active.push_back(first);
+  // The next candidate around `centre` in c: wrapped into a torus; false
+  // where it leaves a box.
+  const auto next_candidate = [&](const Point<D>& centre, Point<D>& c) __attribute__((always_inline)) {
+    c = centre;
+    const Point<D>& v = offsets.next();
+    for (int i = 0; i < D; ++i) c[i] += v[i];
+    if constexpr (Periodic) {
+      // One period at most when 2r is shorter than every period; else the
+      // general wrap.
+      if (short_reach) {
+        for (int i = 0; i < D; ++i) {
+          if (c[i] < domain.lo[i])
+            c[i] += domain.extent(i);
+          else if (c[i] >= domain.hi[i])
+            c[i] -= domain.extent(i);
+        }
+        if (!domain.contains(c)) c = domain.wrap(c);  // rounding onto hi
+      } else {
+        c = domain.wrap(c);
+      }
+      return true;
+    } else {
+      if (any_flat)
+        for (int i = 0; i < D; ++i)
+          if (flat[i]) c[i] = flat_rng.uniform(domain.lo[i], domain.hi[i]);
+      return domain.contains(c);
+    }
+  };
+  if constexpr (Scipy) {
+    // SciPy's loop: the picked sample leaves the pool, and its k candidates
+    // are uniform in the ball of radius 2r, every free one kept. A candidate
+    // within r of the centre is never free, so only the number of those in
+    // the annulus matters: each of the k lands there with probability
+    // 1 - 2^-D (the ball of radius r is 2^-D of the ball of 2r), which is
+    // the chance that D random bits are not all zero. Those are drawn from
+    // the annulus like Bridson's.
+    while (!active.empty()) {
+      const std::size_t slot = rng.below(active.size());
+      const Point<D> centre = active[slot];
+      active[slot] = active.back();
+      active.pop_back();
+      grid.prefetch_around(centre);
+      const int tries = surface ? k : annulus_hits<D>(k, rng);
+      for (int attempt = 0; attempt < tries; ++attempt) {
+        Point<D> c;
+        if (next_candidate(centre, c) && grid.is_free(c, cell)) {
+          grid.insert(c, cell);
+          active.push_back(c);
+          points.push_back(c);
+        }
+      }
+    }
+    return points;
+  }
   while (!active.empty()) {
     const std::size_t slot = rng.below(active.size());
     const Point<D> centre = active[slot];
     grid.prefetch_around(centre);
     bool found = false;
     for (int attempt = 0; attempt < k; ++attempt) {
-      Point<D> c = centre;
-      const Point<D>& v = offsets.next();
-      for (int i = 0; i < D; ++i) c[i] += v[i];
-      if constexpr (Periodic) {
-        // One period at most when 2r is shorter than every period; else the
-        // general wrap.
-        if (short_reach) {
-          for (int i = 0; i < D; ++i) {
-            if (c[i] < domain.lo[i])
-              c[i] += domain.extent(i);
-            else if (c[i] >= domain.hi[i])
-              c[i] -= domain.extent(i);
-          }
-          if (!domain.contains(c)) c = domain.wrap(c);  // rounding onto hi
-        } else {
-          c = domain.wrap(c);
-        }
-      } else {
-        if (any_flat)
-          for (int i = 0; i < D; ++i)
-            if (flat[i]) c[i] = flat_rng.uniform(domain.lo[i], domain.hi[i]);
-        if (!domain.contains(c)) continue;
-      }
+      Point<D> c;
+      if (!next_candidate(centre, c)) continue;
       if (grid.is_free(c, cell)) {
         grid.insert(c, cell);
         active.push_back(c);
@@ -472,9 +553,12 @@ PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, st
 }
 
 template <int D>
-PointSet<D> grow(const Domain<D>& domain, double radius, int k, bool surface, std::uint64_t seed) {
-  return domain.periodic ? grow<D, true>(domain, radius, k, surface, seed)
-                         : grow<D, false>(domain, radius, k, surface, seed);
+PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& params, std::uint64_t seed) {
+  if (params.scipy)
+    return domain.periodic ? grow<D, true, true>(domain, radius, params, seed)
+                           : grow<D, false, true>(domain, radius, params, seed);
+  return domain.periodic ? grow<D, true, false>(domain, radius, params, seed)
+                         : grow<D, false, false>(domain, radius, params, seed);
 }
 
 // Count mode. A finished set at the radius holds more than the count; taking
@@ -500,7 +584,7 @@ PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<
     // Aim at half the allowed surplus, inside the bracket.
     double next = holds * std::pow(static_cast<double>(points.size()) / (n * (1.0 + kCountSurplus / 2)), 1.0 / D);
     if (!(next < fails)) next = std::sqrt(holds * fails);
-    PointSet<D> grown = grow(domain, next, params.k, params.surface, seed);
+    PointSet<D> grown = grow(domain, next, params, seed);
     if (grown.size() >= count) {
       holds = next;
       points = std::move(grown);
@@ -535,7 +619,7 @@ void validate(const BridsonParams& params, const Domain<D>& domain) {
 template <int D>
 PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::uint64_t seed) {
   validate(params, domain);
-  PointSet<D> points = grow(domain, params.radius, params.k, params.surface, seed);
+  PointSet<D> points = grow(domain, params.radius, params, seed);
   if (!params.count) return points;
   if (points.size() < *params.count)
     throw InvalidArgument("bridson: only " + std::to_string(points.size()) + " points fit at radius " +
