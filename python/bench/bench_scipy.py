@@ -6,7 +6,8 @@
 Measures, best of several repetitions (wall clock, time.perf_counter):
   1. PoissonDisk(...).fill_space(): scipy.stats.qmc (one run: it takes
      seconds) against pds.qmc (median of 21), 2D and 3D, with the default
-     method (Bridson, SciPy's algorithm) and the faster maximal ones;
+     method (SciPy's own loop, run by pds's bridson with scipy=1) and the
+     maximal ones;
   2. a whole call of pds.generate for 100 points (its overhead bounds);
   3. pds.generate for about 10^6 points against the C++ library's own time
      for the same request (pds_cpp_time, built with the module).
