@@ -29,7 +29,9 @@ What differs:
   the pool. Candidates closer than the radius to the centre are counted, not
   drawn (they can never be kept). The offsets are drawn on a grid of
   2 radius 2^-31 along each axis, two numbers a 64-bit draw. So the sets
-  follow SciPy's law (the same number of points on average), not Bridson's
+  follow SciPy's law to d = 4 (the same number of points on average; from
+  d = 5 SciPy's own neighbour search misses some conflicts and breaks the
+  radius, pds's does not), not Bridson's
   (which keeps a sample until ``ncandidates`` candidates fail in a row: 3%
   more points in 2D, 1.6 times the time).
   ``method=`` picks any other pds method that takes a radius, e.g.

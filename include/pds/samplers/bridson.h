@@ -19,7 +19,7 @@ inline constexpr double kBridsonCountRho = 0.65;
 
 struct BridsonParams {
   double radius = 0.0;                 // minimum distance between samples, > 0
-  int k = 30;                          // candidates tried around an active sample before it retires, >= 1
+  int k = 30;                          // candidates around a picked active sample (see scipy), >= 1
   std::optional<std::uint64_t> count;  // return exactly this many (see below)
   /// Candidates on the sphere of radius kSurfaceRadius * radius around the
   /// active sample instead of uniform in the annulus [r, 2r] (SciPy's
@@ -32,8 +32,9 @@ struct BridsonParams {
   /// candidates uniform in the ball of radius 2r (on the sphere with
   /// `surface`), and every free one of them is kept. Bridson's stops at the
   /// first free candidate and keeps the sample active until k fail in a row.
-  /// SciPy's law, fewer candidates (2D: k 3/4 tried a sample against about
-  /// 1.2 k), slightly fewer samples.
+  /// SciPy's law (to 4 dimensions: past them SciPy's neighbour search
+  /// misses conflicts), fewer candidates (2D: k 3/4 tried a sample against
+  /// about 1.2 k), slightly fewer samples.
   bool scipy = false;
 };
 

@@ -131,7 +131,9 @@ const Method& bridson_method() {
               {3, false, 0.08, 0.74, 0.79},
               {3, true, 0.08, 0.72, 0.76}},
       .memory_ratio = 6,
-      .params = {{"k", 30, 1, 1e6, true, "candidates tried around an active sample before it retires"},
+      .params = {{"k", 30, 1, 1e6, true,
+                  "candidates around a picked active sample: it retires after k fail in a row (with scipy=1: after k, "
+                  "each tried once)"},
                  {"surface", 0, 0, 1, true,
                   "1: candidates on the sphere of radius 1.001 r, not in the annulus [r, 2r] (denser)"},
                  {"scipy", 0, 0, 1, true,

@@ -242,8 +242,25 @@ TEST(Bridson, ScipyLoopKeepsTheRadiusEverywhere) {
         params.radius = 0.25;
         const Domain<4> space{{0, 0, 0, 0}, {1, 1, 1, 1}, torus};
         expect_poisson_disk(bridson(params, space, seed), space, params.radius);
+        // Odd dimensions past 4: the 32-bit offsets of two trials share the
+        // middle draw, and the ball's hits take D bits each.
+        params.radius = 0.4;
+        const Domain<5> five{{0, 0, 0, 0, 0}, {1, 1, 1, 1, 1}, torus};
+        expect_poisson_disk(bridson(params, five, seed), five, params.radius);
+        params.radius = 0.6;
+        const Domain<7> seven{{0, 0, 0, 0, 0, 0, 0}, {1, 1, 1, 1, 1, 1, 1}, torus};
+        expect_poisson_disk(bridson(params, seven, seed), seven, params.radius);
       }
     }
+  // A box thinner than the radius along one axis (its candidates take a
+  // uniform coordinate there): the slab fills as the square does.
+  params.surface = false;
+  params.radius = 0.01;
+  const auto slab = Domain<3>::box({0, 0, 0}, {1, 1, 0.001});
+  const auto in_slab = bridson(params, slab, 3);
+  expect_poisson_disk(in_slab, slab, params.radius);
+  EXPECT_GT(static_cast<double>(in_slab.size()),
+            0.9 * static_cast<double>(bridson(params, Domain<2>::unit(false), 3).size()));
 }
 
 TEST(Bridson, ScipyLoopIsDeterministicAndItsOwn) {
