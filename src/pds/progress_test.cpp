@@ -21,7 +21,7 @@ GenerateRequest request_for(const std::string& method) {
   GenerateRequest r;
   r.torus = true;
   r.seed = 5;
-  if (method == "fpo" || method == "best-candidate")
+  if (method == "fpo" || method == "best-candidate" || method == "elimination")
     r.count = method == "fpo" ? 500 : 2000;
   else
     r.radius = 0.01;
@@ -62,7 +62,7 @@ TEST_P(ProgressOfMethod, CancellationStopsTheRun) {
 }
 
 std::vector<std::string> reporting_methods() {
-  std::vector<std::string> out = {"best-candidate", "dart-throwing"};
+  std::vector<std::string> out = {"best-candidate", "dart-throwing", "elimination"};
   for (const Method& m : methods())
     if (m.name == "jones" || m.name == "fpo") out.push_back(m.name);  // with the CGAL component
   return out;

@@ -10,6 +10,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 #include "pds/samplers/constraints.h"
 
 namespace pds {
@@ -38,6 +39,9 @@ struct EliminationParams {
   /// eliminated samples follow the survivors, the last eliminated first.
   bool progressive = true;
   EliminationWeights weights;
+  /// Optional progress (candidates removed, over every round) and
+  /// cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// Draws ceil(candidates * count) white-noise candidates (seeded) and keeps
@@ -84,6 +88,6 @@ PointSet<D> elimination(const EliminationParams& params, const SamplingConstrain
 /// candidates, a candidate outside the domain, more than 2^31 candidates.
 template <int D>
 PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const Domain<D>& domain,
-                      const EliminationWeights& weights = {}, bool progressive = true);
+                      const EliminationWeights& weights = {}, bool progressive = true, const Progress& progress = {});
 
 }  // namespace pds

@@ -235,6 +235,7 @@ const Method& elimination_method() {
               params.weights.alpha = r.param("alpha", 8);
               params.weights.beta = r.param("beta", 0.65);
               params.weights.gamma = r.param("gamma", 1.5);
+              params.progress = r.progress;
               // The candidates, not the output, are what takes the memory.
               require_point_budget(std::ceil(params.candidates * static_cast<double>(params.count)), r.dim,
                                    std::numeric_limits<std::uint64_t>::max(), "elimination's candidates");

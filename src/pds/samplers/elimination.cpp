@@ -254,7 +254,7 @@ class WeightHeap {
 template <int D, bool Scaled>
 std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::span<const double> scale,
                                            std::size_t keep, const Domain<D>& domain, double d_max,
-                                           const WeightFunction& weight) {
+                                           const WeightFunction& weight, ProgressReporter& progress, double done) {
   const double largest = Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0;
   const CellIndex<D> index(domain, points, d_max * largest);
   const std::size_t n = index.size();
@@ -282,6 +282,7 @@ std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std
   std::vector<std::uint32_t> eliminated;  // sorted positions, in elimination order
   eliminated.reserve(n - keep);
   for (std::size_t left = n; left > keep; --left) {
+    progress.update(done + static_cast<double>(n - left));
     const std::uint32_t gone = heap.pop();
     eliminated.push_back(gone);
     // The pair's weight is evaluated from the neighbour's side, as when it
@@ -304,9 +305,9 @@ std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std
 template <int D>
 std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::span<const double> scale,
                                            std::size_t keep, const Domain<D>& domain, double d_max,
-                                           const WeightFunction& weight) {
-  return scale.empty() ? eliminate_round<D, false>(points, scale, keep, domain, d_max, weight)
-                       : eliminate_round<D, true>(points, scale, keep, domain, d_max, weight);
+                                           const WeightFunction& weight, ProgressReporter& progress, double done) {
+  return scale.empty() ? eliminate_round<D, false>(points, scale, keep, domain, d_max, weight, progress, done)
+                       : eliminate_round<D, true>(points, scale, keep, domain, d_max, weight, progress, done);
 }
 
 void validate(const EliminationWeights& w) {
@@ -325,13 +326,25 @@ namespace detail {
 template <int D>
 std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, std::span<const double> scale,
                                              std::size_t count, const Domain<D>& domain, double d_max,
-                                             const EliminationWeights& weights, bool progressive, int growth_dim) {
+                                             const EliminationWeights& weights, bool progressive, int growth_dim,
+                                             const Progress& progress) {
   const double ratio = static_cast<double>(count) / static_cast<double>(points.size());
   const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
   const WeightFunction first(d_max, d_min, weights.alpha);
-  std::vector<std::uint32_t> kept = eliminate_round<D>(points, scale, count, domain, d_max, first);
+  // The work counted: every candidate removed, in the first round and in the
+  // halvings of the progressive order.
+  double removals = static_cast<double>(points.size() - count);
+  if (progressive)
+    for (std::size_t size = count; size >= 2; size /= 2) removals += static_cast<double>(size - size / 2);
+  ProgressReporter reporter(progress, removals);
+  double done = 0;
+  std::vector<std::uint32_t> kept = eliminate_round<D>(points, scale, count, domain, d_max, first, reporter, done);
+  done += static_cast<double>(points.size() - count);
   kept.resize(count);
-  if (!progressive) return kept;
+  if (!progressive) {
+    reporter.finish();
+    return kept;
+  }
   PointSet<D> out(count);
   std::vector<double> out_scale(scale.empty() ? 0 : count);
   std::vector<std::uint32_t> round(count);
@@ -344,10 +357,13 @@ std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, s
     const WeightFunction weight(d_max, d_min, weights.alpha);
     const std::vector<std::uint32_t> order = eliminate_round<D>(
         std::span<const Point<D>>(out.data(), size),
-        std::span<const double>(out_scale.data(), scale.empty() ? 0 : size), size / 2, domain, d_max, weight);
+        std::span<const double>(out_scale.data(), scale.empty() ? 0 : size), size / 2, domain, d_max, weight,
+        reporter, done);
+    done += static_cast<double>(size - size / 2);
     for (std::size_t i = 0; i < size; ++i) round[i] = kept[order[i]];
     std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), kept.begin());
   }
+  reporter.finish();
   return kept;
 }
 
@@ -357,7 +373,7 @@ void validate_elimination_weights(const EliminationWeights& weights) { validate(
 
 template <int D>
 PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const Domain<D>& domain,
-                      const EliminationWeights& weights, bool progressive) {
+                      const EliminationWeights& weights, bool progressive, const Progress& progress) {
   domain.validate();
   validate(weights);
   if (count == 0) throw InvalidArgument("elimination: count must be at least 1, got 0");
@@ -375,7 +391,7 @@ PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const 
   const std::size_t n = static_cast<std::size_t>(count);
   const double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
   const std::vector<std::uint32_t> kept =
-      detail::eliminate_indices<D>(candidates, {}, n, domain, d_max, weights, progressive, D);
+      detail::eliminate_indices<D>(candidates, {}, n, domain, d_max, weights, progressive, D, progress);
   PointSet<D> out(n);
   for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
   return out;
@@ -395,7 +411,7 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   Rng rng(seed);
   PointSet<D> candidates(static_cast<std::size_t>(m));
   for (Point<D>& p : candidates) p = uniform_point(rng, domain);
-  return eliminate(candidates, params.count, domain, params.weights, params.progressive);
+  return eliminate(candidates, params.count, domain, params.weights, params.progressive, params.progress);
 }
 
 template <int D>
@@ -466,7 +482,8 @@ PointSet<D> elimination(const EliminationParams& params, const SamplingConstrain
   const auto n = static_cast<std::size_t>(count);
   const double d_max = 2.0 * max_packing_radius(volume, n, D);
   const std::vector<std::uint32_t> kept =
-      detail::eliminate_indices<D>(candidates, scale, n, domain, d_max, params.weights, params.progressive, D);
+      detail::eliminate_indices<D>(candidates, scale, n, domain, d_max, params.weights, params.progressive, D,
+                                   params.progress);
   PointSet<D> out(n);
   for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
   return out;
@@ -477,10 +494,11 @@ PointSet<D> elimination(const EliminationParams& params, const SamplingConstrain
                                       std::uint64_t);                                                                  \
   template std::vector<std::uint32_t> detail::eliminate_indices<D>(std::span<const Point<D>>, std::span<const double>, \
                                                                    std::size_t, const Domain<D>&, double,              \
-                                                                   const EliminationWeights&, bool, int);              \
+                                                                   const EliminationWeights&, bool, int,               \
+                                                                   const Progress&);                                   \
   template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                      \
   template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&,    \
-                                    bool);
+                                    bool, const Progress&);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 

@@ -8,6 +8,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 #include "pds/samplers/elimination.h"
 
 namespace pds::detail {
@@ -19,11 +20,13 @@ namespace pds::detail {
 /// of its two factors. Progressive: the kept set is ordered by halving rounds
 /// that grow d_max by 2^(1/growth_dim) each (growth_dim is the dimension of
 /// the set: 2 on a surface). Returns indices into `points`, the kept ones in
-/// output order. The caller validates.
+/// output order. `progress` hears the candidates removed over all rounds. The
+/// caller validates.
 template <int D>
 std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, std::span<const double> scale,
                                              std::size_t count, const Domain<D>& domain, double d_max,
-                                             const EliminationWeights& weights, bool progressive, int growth_dim);
+                                             const EliminationWeights& weights, bool progressive, int growth_dim,
+                                             const Progress& progress = {});
 
 /// Throws InvalidArgument for weights out of range.
 void validate_elimination_weights(const EliminationWeights& weights);
