@@ -11,6 +11,7 @@
 #include "pds/limits.h"
 #include "pds/registry.h"
 #include "pds/samplers/surface.h"
+#include "terminal.h"
 
 namespace pds::cli {
 
@@ -65,7 +66,12 @@ void generate_on_mesh(const CLI::App& command, const std::string& method, const 
   require_point_budget(std::ceil(sp.candidates * static_cast<double>(sp.count)), 3,
                        std::numeric_limits<std::uint64_t>::max(), "elimination's candidates on the mesh");
 
-  const SurfaceSamples samples = sample_surface(mesh, sp, generation.seed);
+  SurfaceSamples samples;
+  {
+    const ProgressBar bar(method, generation.quiet);
+    sp.progress = bar.progress();
+    samples = sample_surface(mesh, sp, generation.seed);
+  }
   PointCloud table{7, {}};
   table.coords.reserve(samples.size() * 7);
   for (std::size_t i = 0; i < samples.size(); ++i) {

@@ -37,6 +37,8 @@ struct SurfaceParams {
   /// interpolation of its corners', and the local spacing goes as
   /// density^(-1/2). Only ratios matter.
   std::vector<double> vertex_density;
+  /// Optional progress (candidates removed) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 struct SurfaceSamples {

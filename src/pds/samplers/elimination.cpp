@@ -355,10 +355,10 @@ std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, s
     }
     d_max *= std::pow(2.0, 1.0 / growth_dim);
     const WeightFunction weight(d_max, d_min, weights.alpha);
-    const std::vector<std::uint32_t> order = eliminate_round<D>(
-        std::span<const Point<D>>(out.data(), size),
-        std::span<const double>(out_scale.data(), scale.empty() ? 0 : size), size / 2, domain, d_max, weight,
-        reporter, done);
+    const std::vector<std::uint32_t> order =
+        eliminate_round<D>(std::span<const Point<D>>(out.data(), size),
+                           std::span<const double>(out_scale.data(), scale.empty() ? 0 : size), size / 2, domain, d_max,
+                           weight, reporter, done);
     done += static_cast<double>(size - size / 2);
     for (std::size_t i = 0; i < size; ++i) round[i] = kept[order[i]];
     std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), kept.begin());
@@ -481,23 +481,21 @@ PointSet<D> elimination(const EliminationParams& params, const SamplingConstrain
   const double volume = domain.volume() * static_cast<double>(m) / draws;
   const auto n = static_cast<std::size_t>(count);
   const double d_max = 2.0 * max_packing_radius(volume, n, D);
-  const std::vector<std::uint32_t> kept =
-      detail::eliminate_indices<D>(candidates, scale, n, domain, d_max, params.weights, params.progressive, D,
-                                   params.progress);
+  const std::vector<std::uint32_t> kept = detail::eliminate_indices<D>(
+      candidates, scale, n, domain, d_max, params.weights, params.progressive, D, params.progress);
   PointSet<D> out(n);
   for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
   return out;
 }
 
-#define PDS_INSTANTIATE(D)                                                                                             \
-  template PointSet<D> elimination<D>(const EliminationParams&, const SamplingConstraints<D>&, const Domain<D>&,       \
-                                      std::uint64_t);                                                                  \
-  template std::vector<std::uint32_t> detail::eliminate_indices<D>(std::span<const Point<D>>, std::span<const double>, \
-                                                                   std::size_t, const Domain<D>&, double,              \
-                                                                   const EliminationWeights&, bool, int,               \
-                                                                   const Progress&);                                   \
-  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                      \
-  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&,    \
+#define PDS_INSTANTIATE(D)                                                                                          \
+  template PointSet<D> elimination<D>(const EliminationParams&, const SamplingConstraints<D>&, const Domain<D>&,    \
+                                      std::uint64_t);                                                               \
+  template std::vector<std::uint32_t> detail::eliminate_indices<D>(                                                 \
+      std::span<const Point<D>>, std::span<const double>, std::size_t, const Domain<D>&, double,                    \
+      const EliminationWeights&, bool, int, const Progress&);                                                       \
+  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                   \
+  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, \
                                     bool, const Progress&);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE

@@ -197,8 +197,8 @@ SurfaceSamples sample_surface(const TriangleMesh& mesh, const SurfaceParams& par
   const std::size_t n = static_cast<std::size_t>(params.count);
   if (n > m) throw InvalidArgument("surface: count is more than the candidates");
   const double d_max = 2.0 * std::sqrt(total / (2.0 * std::sqrt(3.0) * static_cast<double>(n)));
-  const std::vector<std::uint32_t> kept = detail::eliminate_indices<3>(candidates, scale, n, box, d_max, params.weights,
-                                                                       params.progressive, /*growth_dim=*/2);
+  const std::vector<std::uint32_t> kept = detail::eliminate_indices<3>(
+      candidates, scale, n, box, d_max, params.weights, params.progressive, /*growth_dim=*/2, params.progress);
 
   SurfaceSamples out;
   out.positions.resize(n);

@@ -153,6 +153,29 @@ TEST(Surface, SphereSamplesAreOnTheSurfaceExactCountAndSpread) {
   for (std::size_t i = 0; i < s.size(); ++i) ASSERT_GT(dot(s.normals[i], s.positions[i]), 0.9);
 }
 
+// Progress counts the candidates removed (all rounds), monotone up to the
+// total; it changes no byte, and a callback that says stop cancels the run.
+TEST(Surface, ReportsProgressAndCanBeCancelled) {
+  const TriangleMesh t = torus(48, 16);
+  SurfaceParams params{.count = 1000, .progressive = true};
+  const SurfaceSamples quiet = sample_surface(t, params, 3);
+  std::vector<std::pair<double, double>> reports;
+  params.progress.report = [&](double done, double total) {
+    reports.emplace_back(done, total);
+    return true;
+  };
+  const SurfaceSamples heard = sample_surface(t, params, 3);
+  EXPECT_EQ(heard.positions, quiet.positions);
+  ASSERT_GE(reports.size(), 10u);
+  // 4,000 removed in the first round, then 500 + 250 + ... + 1 in the halvings.
+  EXPECT_EQ(reports.front().second, 4000.0 + 999.0);
+  for (std::size_t i = 1; i < reports.size(); ++i) EXPECT_GE(reports[i].first, reports[i - 1].first);
+  EXPECT_EQ(reports.back().first, reports.back().second);
+  int calls = 0;
+  params.progress.report = [&](double, double) { return ++calls < 3; };
+  EXPECT_THROW(sample_surface(t, params, 3), Cancelled);
+}
+
 TEST(Surface, TorusAndSliver) {
   const TriangleMesh t = torus(48, 16);
   const SurfaceSamples s = sample_surface(t, {.count = 1000, .progressive = true}, 3);
