@@ -9,6 +9,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -36,6 +37,10 @@ struct BridsonParams {
   /// misses conflicts), fewer candidates (2D: k 3/4 tried a sample against
   /// about 1.2 k), slightly fewer samples.
   bool scipy = false;
+  /// Optional progress (samples placed, against an estimate of the total;
+  /// with a count, each radius tried and the final elimination in turn) and
+  /// cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// The candidates' sphere with BridsonParams::surface, in radii: just beyond

@@ -149,6 +149,7 @@ const Method& bridson_method() {
               params.surface = r.param("surface", 0) != 0;
               params.scipy = r.param("scipy", 0) != 0;
               params.count = r.count;
+              params.progress = r.progress;
               if (r.constraints.active() && params.surface)
                 throw InvalidArgument("bridson: surface=1 is not taken with a density, a mask or fixed points");
               if (r.constraints.active() && params.scipy)

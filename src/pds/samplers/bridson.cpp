@@ -442,7 +442,12 @@ int annulus_hits(int k, Rng& rng) {
 }
 
 template <int D, bool Periodic, bool Scipy>
-PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& params, std::uint64_t seed) {
+PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& params, std::uint64_t seed,
+                 const Progress& progress) {
+  // Reported every kReportEvery samples (a branch taken that rarely costs
+  // nothing measurable in the loop), against the usual count at the radius.
+  constexpr std::size_t kReportEvery = 256;
+  ProgressReporter reporter(progress, typical_count(sizing_volume(domain, radius), radius, D));
   const int k = params.k;
   const bool surface = params.surface;
   std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius);
@@ -523,9 +528,11 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
           grid.insert(c, cell);
           active.push_back(c);
           points.push_back(c);
+          if (points.size() % kReportEvery == 0) reporter.update(static_cast<double>(points.size()));
         }
       }
     }
+    reporter.finish();
     return points;
   }
   while (!active.empty()) {
@@ -540,6 +547,7 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
         grid.insert(c, cell);
         active.push_back(c);
         points.push_back(c);
+        if (points.size() % kReportEvery == 0) reporter.update(static_cast<double>(points.size()));
         found = true;
         break;
       }
@@ -549,16 +557,18 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
       active.pop_back();
     }
   }
+  reporter.finish();
   return points;
 }
 
 template <int D>
-PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& params, std::uint64_t seed) {
+PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& params, std::uint64_t seed,
+                 const Progress& progress) {
   if (params.scipy)
-    return domain.periodic ? grow<D, true, true>(domain, radius, params, seed)
-                           : grow<D, false, true>(domain, radius, params, seed);
-  return domain.periodic ? grow<D, true, false>(domain, radius, params, seed)
-                         : grow<D, false, false>(domain, radius, params, seed);
+    return domain.periodic ? grow<D, true, true>(domain, radius, params, seed, progress)
+                           : grow<D, false, true>(domain, radius, params, seed, progress);
+  return domain.periodic ? grow<D, true, false>(domain, radius, params, seed, progress)
+                         : grow<D, false, false>(domain, radius, params, seed, progress);
 }
 
 // Count mode. A finished set at the radius holds more than the count; taking
@@ -573,6 +583,9 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
 // minimum distance still holds; each set is grown from the same seed.
 constexpr double kCountSurplus = 0.02;
 constexpr int kCountSearchSteps = 8;
+// Progress with a count: the first set, each radius of the search (the
+// steps not taken are skipped), the elimination.
+constexpr std::size_t kCountParts = kCountSearchSteps + 2;
 
 template <int D>
 PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<D>& domain, const BridsonParams& params,
@@ -584,7 +597,7 @@ PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<
     // Aim at half the allowed surplus, inside the bracket.
     double next = holds * std::pow(static_cast<double>(points.size()) / (n * (1.0 + kCountSurplus / 2)), 1.0 / D);
     if (!(next < fails)) next = std::sqrt(holds * fails);
-    PointSet<D> grown = grow(domain, next, params, seed);
+    PointSet<D> grown = grow(domain, next, params, seed, part_of(params.progress, static_cast<std::size_t>(1 + step), kCountParts));
     if (grown.size() >= count) {
       holds = next;
       points = std::move(grown);
@@ -592,7 +605,8 @@ PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<
       fails = next;
     }
   }
-  return eliminate(points, count, domain, {}, /*progressive=*/false);
+  return eliminate(points, count, domain, {}, /*progressive=*/false,
+                   part_of(params.progress, kCountParts - 1, kCountParts));
 }
 
 template <int D>
@@ -619,7 +633,9 @@ void validate(const BridsonParams& params, const Domain<D>& domain) {
 template <int D>
 PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::uint64_t seed) {
   validate(params, domain);
-  PointSet<D> points = grow(domain, params.radius, params, seed);
+  PointSet<D> points =
+      grow(domain, params.radius, params, seed,
+           params.count ? part_of(params.progress, 0, kCountParts) : params.progress);
   if (!params.count) return points;
   if (points.size() < *params.count)
     throw InvalidArgument("bridson: only " + std::to_string(points.size()) + " points fit at radius " +
