@@ -318,6 +318,26 @@ TEST(Bridson, ScipyLoopFollowsScipysLaw) {
   }
 }
 
+// With a count, progress runs through the first set, the radii tried and the
+// elimination, monotone to the end, and changes no byte.
+TEST(Bridson, CountReportsProgressThroughEveryStage) {
+  BridsonParams params;
+  params.radius = 0.005;
+  params.count = 20000;
+  const auto domain = Domain<2>::unit(true);
+  const auto quiet = bridson(params, domain, 4);
+  std::vector<double> done;
+  params.progress.report = [&](double d, double total) {
+    EXPECT_EQ(total, 10.0);  // kCountParts
+    done.push_back(d);
+    return true;
+  };
+  EXPECT_EQ(bridson(params, domain, 4), quiet);
+  ASSERT_GE(done.size(), 10u);
+  for (std::size_t i = 1; i < done.size(); ++i) EXPECT_GE(done[i], done[i - 1]) << i;
+  EXPECT_EQ(done.back(), 10.0);
+}
+
 TEST(Bridson, BadParameters) {
   BridsonParams params;
   params.radius = 0.1;
