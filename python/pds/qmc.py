@@ -31,20 +31,20 @@ What differs:
   2 radius 2^-31 along each axis, two numbers a 64-bit draw. So the sets
   follow SciPy's law to d = 4 (the same number of points on average; from
   d = 5 SciPy's own neighbour search misses some conflicts and breaks the
-  radius, pds's does not), not Bridson's
-  (which keeps a sample until ``ncandidates`` candidates fail in a row: 3%
-  more points in 2D, 1.6 times the time).
+  radius, pds's does not), not Bridson's (which keeps a sample until
+  ``ncandidates`` candidates fail in a row: 3% more points in 2D, 1.6 times
+  the time).
   ``method=`` picks any other pds method that takes a radius, e.g.
   ``"dunbar-humphreys"`` (maximal, 2D) or ``"ebeida"`` (maximal); those take
   ``hypersphere="volume"`` only.
 - ``d`` is any dimension the method takes (1 to 8 for bridson);
   ``optimization`` must be None.
 - Seeds: an int ``s`` is the pds seed ``s`` (so ``pds generate bridson
-  --radius R --param scipy=1 --seed s`` prints the same points); a ``numpy.random.Generator``
-  or ``RandomState`` gives one 64-bit draw at construction (advancing it
-  once), a ``SeedSequence`` its first 64-bit state word, and None fresh OS
-  entropy. ``reset()`` returns to that pds seed, as SciPy's returns to its
-  seed. The points are pds's, not SciPy's: the same seed gives a different
+  --radius R --param scipy=1 --seed s`` prints the same points); a
+  ``numpy.random.Generator`` or ``RandomState`` gives one 64-bit draw at
+  construction (advancing it once), a ``SeedSequence`` its first 64-bit
+  state word, and None fresh OS entropy. ``reset()`` returns to that pds
+  seed, as SciPy's returns to its seed. The points are pds's, not SciPy's: the same seed gives a different
   (equally valid) set.
 """
 

@@ -361,7 +361,7 @@ class AnnulusOffsets {
         }
         n += keep(v, n);
       } else {
-        // Two draws a number: the low and the high 32 bits as signed values
+        // Two numbers a draw: the low and the high 32 bits as signed values
         // on a grid of 2r 2^-31.
         std::array<std::uint64_t, D> words;
         for (int i = 0; i < D; ++i) words[i] = streams_[i].next();
