@@ -24,6 +24,16 @@ void expect_poisson_disk(const PointSet<D>& points, const Domain<D>& domain, dou
   EXPECT_GE(md.distance, radius) << domain << ": " << points[md.i] << " " << points[md.j];
 }
 
+// A 1 x 1 x 0.001 slab, thinner than the radius along z (its candidates take
+// a uniform coordinate there), holds about as many points as the unit square.
+void expect_slab_fills_as_the_square(const BridsonParams& params) {
+  const auto slab = Domain<3>::box({0, 0, 0}, {1, 1, 0.001});
+  const auto in_slab = bridson(params, slab, 3);
+  expect_poisson_disk(in_slab, slab, params.radius);
+  EXPECT_GT(static_cast<double>(in_slab.size()),
+            0.9 * static_cast<double>(bridson(params, Domain<2>::unit(false), 3).size()));
+}
+
 TEST(Bridson, PeriodsShorterThanTheNeighbourhood) {
   // Periods of one or two cells: the margin holds several copies of a sample
   // and the min-image distance must still be the one the oracle takes.
@@ -163,11 +173,7 @@ TEST(Bridson, RadiusLargerThanTheDomainGivesOnePoint) {
 TEST(Bridson, BoxesThinnerThanTheRadiusFillUp) {
   BridsonParams params;
   params.radius = 0.01;
-  const auto slab = Domain<3>::box({0, 0, 0}, {1, 1, 0.001});
-  const auto in_slab = bridson(params, slab, 3);
-  expect_poisson_disk(in_slab, slab, params.radius);
-  EXPECT_GT(static_cast<double>(in_slab.size()),
-            0.9 * static_cast<double>(bridson(params, Domain<2>::unit(false), 3).size()));
+  expect_slab_fills_as_the_square(params);
   const auto line = static_cast<double>(bridson(params, Domain<1>::unit(false), 3).size());
   const auto tube = Domain<3>::box({0, 0, 0}, {1, 1e-6, 1e-6});
   const auto in_tube = bridson(params, tube, 3);
@@ -256,11 +262,7 @@ TEST(Bridson, ScipyLoopKeepsTheRadiusEverywhere) {
   // uniform coordinate there): the slab fills as the square does.
   params.surface = false;
   params.radius = 0.01;
-  const auto slab = Domain<3>::box({0, 0, 0}, {1, 1, 0.001});
-  const auto in_slab = bridson(params, slab, 3);
-  expect_poisson_disk(in_slab, slab, params.radius);
-  EXPECT_GT(static_cast<double>(in_slab.size()),
-            0.9 * static_cast<double>(bridson(params, Domain<2>::unit(false), 3).size()));
+  expect_slab_fills_as_the_square(params);
 }
 
 TEST(Bridson, ScipyLoopIsDeterministicAndItsOwn) {
