@@ -171,6 +171,23 @@ class GridNeighbourhood {
     }
   }
 
+  /// For a window that does not cross a torus's seam: calls f(index) with the
+  /// first cell of each row (the window's count[0] cells from there on are
+  /// consecutive indices), axes 1.. in for_each_cell's order.
+  template <class F>
+  void for_each_row(const Window& w, F&& f) const {
+    if (w.empty) return;
+    Coords offset{};
+    while (true) {
+      std::size_t row = static_cast<std::size_t>(w.first[0]);
+      for (int a = 1; a < D; ++a) row += static_cast<std::size_t>(w.first[a] + offset[a]) * stride_[a];
+      f(row);
+      int axis = 1;
+      while (axis < D && ++offset[axis] == w.count[axis]) offset[axis++] = 0;
+      if (axis >= D) return;
+    }
+  }
+
   // ---- stencils ------------------------------------------------------------
 
   /// The squared gap between a cell and the cell at `step` from it: along

@@ -3,38 +3,49 @@
 //
 // Method: every candidate i gets the weight w_i = sum over the other
 // candidates j within d_max of (1 - max(d_ij, d_min) / d_max)^alpha
-// (section 3, with the weight limit of section 3.2). The candidates sit in a
-// max-heap on their weights; the top one is removed and its contribution
-// subtracted from each remaining neighbour, whose heap entry moves down
-// (decrease-key), until N remain. d_max = 2 r_max, r_max the radius of the
-// densest packing of N balls in the domain's volume (hexagonal in 2D, FCC in
-// 3D: analysis/relative_radius.h), so d_max is the largest minimum distance N
-// samples could have. Progressive order (section 5): the N survivors are
-// eliminated again to N/2 with d_max grown by 2^(1/D), the N/2 to N/4, and
-// so on; each round's eliminated samples follow its survivors, the last
-// eliminated first (the reverse elimination order is itself a ranking).
-// The weight limit d_min stays the one of the first round, as in the paper's
-// reference code (cyCodeBase, cySampleElim.h).
+// (section 3, with the weight limit of section 3.2). The paper removes the
+// heaviest candidate and subtracts its term from each remaining neighbour,
+// one at a time from a max-heap, until N remain. d_max = 2 r_max, r_max the
+// radius of the densest packing of N balls in the domain's volume (hexagonal
+// in 2D, FCC in 3D: analysis/relative_radius.h), so d_max is the largest
+// minimum distance N samples could have. Progressive order (section 5): the
+// N survivors are eliminated again to N/2 with d_max grown by 2^(1/D), the
+// N/2 to N/4, and so on; each round's eliminated samples follow its
+// survivors, the last eliminated first (the reverse elimination order is
+// itself a ranking). The weight limit d_min stays the one of the first round,
+// as in the paper's reference code (cyCodeBase, cySampleElim.h).
+//
+// What we change: the heap's top is anywhere, so each of its removals reads a
+// fresh neighbourhood from memory. Most removals here run in sweeps in memory
+// order instead, and remove exactly what the heap would, in an order that
+// sorts back to the heap's (RoundEliminator explains why). That needs
+// weights that do not depend on the order of the subtractions: they are sums
+// of terms in fixed point, 2^-32 a unit, so the kept set can differ from one
+// summed in floating point where two weights are within rounding of each
+// other (docs/elimination.md, "Faithfulness").
 //
 // Neighbour search: the candidates are sorted by the cell of a uniform grid
 // of edge about d_max / 2 (GridNeighbourhood's cell arithmetic), so the
-// candidates within d_max of a point are the contiguous runs of the cells of
-// one window (5 cells an axis), each cell once, wrapped across a torus's seam.
-// On a torus distances are to the nearest periodic image (Domain::distance2),
-// so every candidate counts once even when d_max exceeds half a period. The
-// heap holds (weight, index) pairs, ties broken by index, so the result is
-// deterministic.
+// candidates within d_max of a point are the contiguous runs of the rows of
+// one window (5 cells an axis), each cell once, wrapped across a torus's
+// seam. On a torus distances are to the nearest periodic image
+// (Domain::distance2), so every candidate counts once even when d_max exceeds
+// half a period. Removed candidates leave the index after each sweep. Ties
+// between equal weights go to the smaller position in the sorted order, so
+// the result is deterministic.
 //
 // Guarantees: exactly N samples, each a candidate (so inside the domain);
 // same seed, same points. No minimum distance: nothing bounds the closest
 // pair (docs/elimination.md gives the measured relative radius).
 //
-// Complexity: O(M k) for the weights and O((M - N) (k + k' log M)) for the
-// elimination, with M candidates, k ~ 18 (2D) or ~30 (3D) neighbours within
-// d_max for M = 5N, k' the ones still alive; progressive order adds the same
-// on N, N/2, ... samples (about twice the cost on N). Memory: the sorted
-// candidates, a heap entry and a heap position each, and the grid's cell
-// starts (about 4 cells a candidate).
+// Complexity: O(M k) for the weights (each pair once) and about 2 (M - N)
+// neighbourhood scans of k candidates for the elimination, with M candidates
+// and k ~ 18 (2D) or ~30 (3D) neighbours within d_max for M = 5N, plus a sweep
+// over the live candidates per band (about 10 bands) and the heap's O(log M)
+// for the last few percent; progressive order adds the same on N, N/2, ...
+// samples. Memory: the sorted candidates and an 8-byte weight and a 4-byte
+// rank each, the grid's cell starts (about 4 cells a candidate), and a 16-byte
+// record per removal.
 
 #include "pds/samplers/elimination.h"
 
@@ -95,6 +106,12 @@ class WeightFunction {
   bool alpha8_;
 };
 
+// A point near another, at squared distance d2.
+struct Near {
+  std::uint32_t index;
+  double d2;
+};
+
 // Points sorted by grid cell: the points near a point are a few contiguous
 // runs. Indices are positions in the sorted order.
 template <int D>
@@ -147,13 +164,33 @@ class CellIndex {
 
   std::size_t size() const { return points_.size(); }
 
+  /// Drops the points `keep(k)` refuses, keeping the others' order; calls
+  /// moved(from, to) for each kept point, in increasing order (to <= from).
+  template <class Keep, class Moved>
+  void compact(Keep&& keep, Moved&& moved) {
+    std::uint32_t to = 0;
+    for (std::size_t c = 0; c + 1 < start_.size(); ++c) {
+      const std::uint32_t begin = start_[c], end = start_[c + 1];
+      start_[c] = to;
+      for (std::uint32_t k = begin; k < end; ++k)
+        if (keep(k)) {
+          points_[to] = points_[k];
+          original_[to] = original_[k];
+          moved(k, to++);
+        }
+    }
+    start_.back() = to;
+    points_.resize(to);
+    original_.resize(to);
+  }
+
   const Point<D>& point(std::uint32_t k) const { return points_[k]; }
   std::uint32_t original(std::uint32_t k) const { return original_[k]; }
 
-  /// Calls f(k, d2) for every point k other than `self` closer than the reach
-  /// to points_[self], in a fixed order; d2 = Domain::distance2(point k, p).
-  template <class F>
-  [[gnu::always_inline]] void for_each_near(std::uint32_t self, F&& f) const {
+  /// Writes to out[0, n) every point k other than `self` closer than the
+  /// reach to points_[self], with d2 = Domain::distance2(point k, p), in a
+  /// fixed order, and returns n (`out` grows as needed, never shrinks).
+  std::size_t gather(std::uint32_t self, std::vector<Near>& out) const {
     const Point<D>& p = points_[self];
     const double r = reach_ * (1.0 + 1e-12) + 1e-12 * scale_;
     const double r2 = reach_ * reach_;
@@ -163,17 +200,52 @@ class CellIndex {
       first[i] = static_cast<int>(std::floor((x - r) * inv_edge_[i]));
       last[i] = static_cast<int>(std::floor((x + r) * inv_edge_[i]));
     }
-    hood_.for_each_cell(hood_.window(first, last), [&](std::size_t cell, const std::array<int, D>&) {
-      for (std::uint32_t k = start_[cell], end = start_[cell + 1]; k < end; ++k) {
-        if (k == self) continue;
-        const double d2 = domain_.distance2(points_[k], p);
-        if (d2 < r2) f(k, d2);
-      }
-      return true;
-    });
+    std::size_t n = 0;
+    const auto window = hood_.window(first, last);
+    if (!window.seam && narrow(window)) {
+      // No wrapping inside this window, and it spans less than half a period:
+      // every Domain::distance2 here would be the plain difference, so the
+      // cells of a row are one run of points, tested without branches.
+      hood_.for_each_row(window, [&](std::size_t row_start) {
+        const std::uint32_t begin = start_[row_start], end = start_[row_start + window.count[0]];
+        if (out.size() < n + (end - begin)) out.resize(2 * (n + (end - begin)));
+        Near* to = out.data();
+        for (std::uint32_t k = begin; k < end; ++k) {
+          double d2 = 0.0;
+          for (int i = 0; i < D; ++i) {
+            const double d = p[i] - points_[k][i];
+            d2 += d * d;
+          }
+          to[n] = {k, d2};
+          n += static_cast<std::size_t>((d2 < r2) & (k != self));
+        }
+      });
+    } else {
+      hood_.for_each_cell(window, [&](std::size_t cell, const std::array<int, D>&) {
+        for (std::uint32_t k = start_[cell], end = start_[cell + 1]; k < end; ++k) {
+          if (k == self) continue;
+          const double d2 = domain_.distance2(points_[k], p);
+          if (d2 < r2) {
+            if (out.size() <= n) out.resize(2 * n + 16);
+            out[n++] = {k, d2};
+          }
+        }
+        return true;
+      });
+    }
+    return n;
   }
 
  private:
+  // A window less than half the cells wide along every axis of a torus (any
+  // window in a box).
+  bool narrow(const typename GridNeighbourhood<D>::Window& window) const {
+    if (!domain_.periodic) return true;
+    for (int i = 0; i < D; ++i)
+      if (2 * window.count[i] > hood_.cells(i)) return false;
+    return true;
+  }
+
   Domain<D> domain_;
   double reach_;
   double scale_ = 0.0;
@@ -184,13 +256,24 @@ class CellIndex {
   std::vector<std::uint32_t> original_;
 };
 
+// Weights in fixed point, 2^-32 a unit: a pair's term (at most 1) is
+// rounded down once, and a weight is an exact sum of terms, whatever order
+// they are added and subtracted in. So a weight depends only on which
+// candidates are gone, not on the order they went, which is what lets the
+// elimination below run in memory order and still remove exactly what the
+// heap would. Sums of up to 2^31 terms stay below 2^63.
+using Weight = std::uint64_t;
+constexpr double kWeightUnit = 0x1.0p32;
+constexpr Weight kGone = std::numeric_limits<Weight>::max();
+constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+
 // A binary max-heap of (weight, index) with the position of each index, for
 // decrease-key. Larger weight first; equal weights, smaller index first.
 class WeightHeap {
  public:
-  static constexpr std::uint32_t kGone = std::numeric_limits<std::uint32_t>::max();
+  static constexpr std::uint32_t kOut = std::numeric_limits<std::uint32_t>::max();
 
-  explicit WeightHeap(const std::vector<double>& weights) : heap_(weights.size()), position_(weights.size()) {
+  explicit WeightHeap(const std::vector<Weight>& weights) : heap_(weights.size()), position_(weights.size()) {
     for (std::size_t k = 0; k < weights.size(); ++k) {
       heap_[k] = {weights[k], static_cast<std::uint32_t>(k)};
       position_[k] = static_cast<std::uint32_t>(k);
@@ -198,22 +281,23 @@ class WeightHeap {
     for (std::size_t at = heap_.size() / 2; at-- > 0;) sift_down(at);
   }
 
-  bool contains(std::uint32_t k) const { return position_[k] != kGone; }
+  bool contains(std::uint32_t k) const { return position_[k] != kOut; }
 
-  std::uint32_t pop() {
-    const std::uint32_t top = heap_[0].index;
-    position_[top] = kGone;
+  /// The top entry, removed.
+  std::pair<Weight, std::uint32_t> pop() {
+    const Entry top = heap_[0];
+    position_[top.index] = kOut;
     heap_[0] = heap_.back();
     heap_.pop_back();
     if (!heap_.empty()) {
       position_[heap_[0].index] = 0;
       sift_down(0);
     }
-    return top;
+    return {top.weight, top.index};
   }
 
-  /// Lowers k's weight by `amount` >= 0.
-  void decrease(std::uint32_t k, double amount) {
+  /// Lowers k's weight by `amount`.
+  void decrease(std::uint32_t k, Weight amount) {
     const std::size_t at = position_[k];
     heap_[at].weight -= amount;
     sift_down(at);
@@ -221,7 +305,7 @@ class WeightHeap {
 
  private:
   struct Entry {
-    double weight;
+    Weight weight;
     std::uint32_t index;
   };
   static bool above(const Entry& a, const Entry& b) {
@@ -247,67 +331,226 @@ class WeightHeap {
   std::vector<std::uint32_t> position_;
 };
 
+// One round of elimination: the paper removes the heaviest candidate, one at
+// a time, from a heap. The heaviest is anywhere, so every removal reads a
+// fresh neighbourhood from memory (cache misses were 40% of the time). Here
+// the same removals run mostly in memory order, by two facts about the heap's
+// sequence (priority: weight, then the smaller index):
+// - A candidate heavier than every live neighbour it shares a non-zero term
+//   with (a local maximum) is removed by the heap before any of those
+//   neighbours, at its present weight: its weight cannot change before one of
+//   them goes, and none of them can be the top while it is there.
+// - The heap's removals come in strictly decreasing priority, and a weight
+//   only falls. So with T the K-th highest priority now (K removals still to
+//   make), the heap's removals of priority >= T are fewer than K, all of
+//   them within this round.
+// A band sweeps the candidates of priority >= T in memory order and settles
+// each: remove it if it is a local maximum, else first settle its heaviest
+// heavier neighbour, until it is gone or below T. That removes exactly the
+// heap's removals of priority >= T (weights are exact, so the state depends
+// only on what is gone). Bands repeat with a new T; the last few removals,
+// when a band would be mostly sweeping, go through the heap itself. The
+// removals are recorded with their weights, and sorting them by priority
+// gives the heap's order.
+template <int D, bool Scaled>
+class RoundEliminator {
+ public:
+  RoundEliminator(std::span<const Point<D>> points, std::span<const double> scale, const Domain<D>& domain,
+                  double d_max, const WeightFunction& weight)
+      : index_(domain, points, d_max * (Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0)),
+        weight_(weight),
+        weights_(index_.size(), 0),
+        rank_(index_.size()) {
+    const std::size_t n = index_.size();
+    if constexpr (Scaled) {
+      scale_.resize(n);
+      for (std::uint32_t k = 0; k < n; ++k) scale_[k] = scale[index_.original(k)];
+    }
+    // Each pair once, its term added to both (sums are exact).
+    for (std::uint32_t k = 0; k < n; ++k) {
+      rank_[k] = k;
+      Weight sum = 0;
+      const std::size_t count = index_.gather(k, near_);
+      for (const Near& m : std::span(near_.data(), count))
+        if (m.index > k) {
+          const Weight q = term(m.index, k, m.d2);
+          sum += q;
+          weights_[m.index] += q;
+        }
+      weights_[k] += sum;
+    }
+  }
+
+  /// Eliminates down to `keep`. Returns indices into the points: the
+  /// survivors first (in input order), then, if `ordered`, the eliminated, the
+  /// last eliminated first.
+  std::vector<std::uint32_t> run(std::size_t keep, bool ordered, bool by_heap, ProgressReporter& progress,
+                                 double done) {
+    const std::size_t total = index_.size();
+    removed_.reserve(total - keep);
+    std::vector<std::uint32_t> ranked;
+    while (index_.size() > keep) {
+      const std::size_t live = index_.size(), to_remove = live - keep;
+      // A band costs a sweep over the live candidates; the heap costs a cache
+      // miss a removal. Sweeps pay while they remove many (measured).
+      if (by_heap || to_remove * kHeapShare < live) {
+        finish_with_heap(to_remove, progress, done);
+        break;
+      }
+      ranked.resize(live);
+      for (std::uint32_t k = 0; k < live; ++k) ranked[k] = k;
+      const auto kth = ranked.begin() + static_cast<std::ptrdiff_t>(to_remove - 1);
+      std::nth_element(ranked.begin(), kth, ranked.end(),
+                       [&](std::uint32_t a, std::uint32_t b) { return above(a, b); });
+      const std::uint32_t t_index = *kth;
+      const Weight t_weight = weights_[t_index];
+      const std::size_t before = removed_.size();
+      for (std::uint32_t k = 0; k < live; ++k)
+        if (weights_[k] != kGone && at_least(k, t_weight, t_index)) settle(k, t_weight, t_index);
+      // The top candidate is a local maximum above the threshold, so a band
+      // removes at least one; and never more than the heap would.
+      if (removed_.size() == before || removed_.size() - before > to_remove)
+        throw Failure("elimination: a band removed " + std::to_string(removed_.size() - before) + " of " +
+                      std::to_string(to_remove) + " candidates (internal error)");
+      progress.update(done + static_cast<double>(removed_.size()));
+      compact();
+    }
+    std::vector<std::uint32_t> order;
+    order.reserve(ordered ? total : keep);
+    for (std::uint32_t k = 0; k < index_.size(); ++k) order.push_back(index_.original(k));
+    std::sort(order.begin(), order.end());
+    if (ordered) {
+      // The heap's order: priority descending; the last eliminated first.
+      std::sort(removed_.begin(), removed_.end(), [](const Removal& a, const Removal& b) {
+        return a.weight > b.weight || (a.weight == b.weight && a.rank < b.rank);
+      });
+      for (auto it = removed_.rbegin(); it != removed_.rend(); ++it) order.push_back(it->original);
+    }
+    return order;
+  }
+
+ private:
+  // Below this share of the live candidates left to remove, the heap finishes.
+  static constexpr std::size_t kHeapShare = 32;
+
+  struct Removal {
+    Weight weight;
+    std::uint32_t rank;      // position before any compaction: the heap's tie-break
+    std::uint32_t original;  // index into the round's input
+  };
+  // The pair (self, k)'s term at squared distance d2, in fixed point; zero
+  // beyond the pair's own d_max.
+  [[gnu::always_inline]] Weight term(std::uint32_t self, std::uint32_t k, double d2) const {
+    double w;
+    if constexpr (Scaled)
+      w = weight_(d2, std::max(scale_[self], scale_[k]));
+    else
+      w = weight_(d2);
+    return static_cast<Weight>(w * kWeightUnit);
+  }
+
+  // Positions keep the order of ranks through compaction, so they break ties.
+  bool above(std::uint32_t a, std::uint32_t b) const {
+    return weights_[a] > weights_[b] || (weights_[a] == weights_[b] && a < b);
+  }
+  bool at_least(std::uint32_t k, Weight t_weight, std::uint32_t t_index) const {
+    return weights_[k] > t_weight || (weights_[k] == t_weight && k <= t_index);
+  }
+
+  // Removes x, or lowers it below the threshold, removing first whatever of
+  // priority >= threshold the heap would remove before it. A candidate is
+  // compared with every live one within reach, not only those its term
+  // reaches: a stricter test, the same removals, and the terms are only
+  // evaluated for a removal.
+  void settle(std::uint32_t x, Weight t_weight, std::uint32_t t_index) {
+    stack_.push_back(x);
+    while (!stack_.empty()) {
+      const std::uint32_t y = stack_.back();
+      if (weights_[y] == kGone || !at_least(y, t_weight, t_index)) {
+        stack_.pop_back();
+        continue;
+      }
+      std::uint32_t heavier = kNone;
+      const std::size_t count = index_.gather(y, near_);
+      for (const Near& m : std::span(near_.data(), count))
+        if (weights_[m.index] != kGone && above(m.index, y) && (heavier == kNone || above(m.index, heavier)))
+          heavier = m.index;
+      if (heavier != kNone) {
+        stack_.push_back(heavier);  // a chain of rising priorities: it ends
+        continue;
+      }
+      for (const Near& m : std::span(near_.data(), count))
+        if (weights_[m.index] != kGone) weights_[m.index] -= term(y, m.index, m.d2);
+      removed_.push_back({weights_[y], rank_[y], index_.original(y)});
+      weights_[y] = kGone;
+      stack_.pop_back();
+    }
+  }
+
+  void finish_with_heap(std::size_t to_remove, ProgressReporter& progress, double done) {
+    WeightHeap heap(weights_);  // the index holds only live candidates
+    for (std::size_t i = 0; i < to_remove; ++i) {
+      progress.update(done + static_cast<double>(removed_.size()));
+      const auto [w, gone] = heap.pop();
+      removed_.push_back({w, rank_[gone], index_.original(gone)});
+      weights_[gone] = kGone;
+      const std::size_t count = index_.gather(gone, near_);
+      for (const Near& m : std::span(near_.data(), count))
+        if (weights_[m.index] != kGone) {
+          const Weight q = term(gone, m.index, m.d2);
+          weights_[m.index] -= q;
+          heap.decrease(m.index, q);
+        }
+    }
+    compact();
+  }
+
+  // Drops the removed candidates from the index and the arrays beside it, so
+  // later sweeps and scans read only live ones.
+  void compact() {
+    index_.compact([&](std::uint32_t k) { return weights_[k] != kGone; },
+                   [&](std::uint32_t from, std::uint32_t to) {
+                     weights_[to] = weights_[from];
+                     rank_[to] = rank_[from];
+                     if constexpr (Scaled) scale_[to] = scale_[from];
+                   });
+    weights_.resize(index_.size());
+    rank_.resize(index_.size());
+    if constexpr (Scaled) scale_.resize(index_.size());
+  }
+
+  CellIndex<D> index_;
+  WeightFunction weight_;
+  std::vector<double> scale_;
+  std::vector<Weight> weights_;  // kGone once removed
+  std::vector<std::uint32_t> rank_;
+  std::vector<Removal> removed_;
+  std::vector<Near> near_;
+  std::vector<std::uint32_t> stack_;
+};
+
 // One round: eliminates `points` down to `keep`. Returns indices into
-// `points`: the survivors first (in input order), then the eliminated, the
-// last eliminated first. `scale` is empty (one d_max for all) or one factor
-// a point: a pair's d_max and d_min grow by the larger of its two factors.
+// `points`: the survivors first (in input order), then (if `ordered`) the
+// eliminated, the last eliminated first. `scale` is empty (one d_max for all)
+// or one factor a point: a pair's d_max and d_min grow by the larger of its
+// two factors.
 template <int D, bool Scaled>
 std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::span<const double> scale,
                                            std::size_t keep, const Domain<D>& domain, double d_max,
-                                           const WeightFunction& weight, ProgressReporter& progress, double done) {
-  const double largest = Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0;
-  const CellIndex<D> index(domain, points, d_max * largest);
-  const std::size_t n = index.size();
-  std::vector<double> sorted_scale;
-  if constexpr (Scaled) {
-    sorted_scale.resize(n);
-    for (std::uint32_t k = 0; k < n; ++k) sorted_scale[k] = scale[index.original(k)];
-  }
-  // The weight of the pair (self, k) at squared distance d2; zero beyond the
-  // pair's own d_max.
-  auto pair_weight = [&](std::uint32_t self, std::uint32_t k, double d2) {
-    if constexpr (Scaled)
-      return weight(d2, std::max(sorted_scale[self], sorted_scale[k]));
-    else
-      return weight(d2);
-  };
-  std::vector<double> weights(n, 0.0);
-  for (std::uint32_t k = 0; k < n; ++k) {
-    double sum = 0.0;
-    index.for_each_near(k, [&](std::uint32_t j, double d2) { sum += pair_weight(j, k, d2); });
-    weights[k] = sum;
-  }
-  WeightHeap heap(weights);
-  std::vector<double>().swap(weights);    // the heap holds them now: 8 bytes a candidate less at the peak
-  std::vector<std::uint32_t> eliminated;  // sorted positions, in elimination order
-  eliminated.reserve(n - keep);
-  for (std::size_t left = n; left > keep; --left) {
-    progress.update(done + static_cast<double>(n - left));
-    const std::uint32_t gone = heap.pop();
-    eliminated.push_back(gone);
-    // The pair's weight is evaluated from the neighbour's side, as when it
-    // was added (distance2 is symmetric, so the terms cancel exactly anyway).
-    index.for_each_near(gone, [&](std::uint32_t k, double d2) {
-      if (heap.contains(k)) heap.decrease(k, pair_weight(gone, k, d2));
-    });
-  }
-  std::vector<std::uint32_t> order;
-  order.reserve(n);
-  for (std::uint32_t k = 0; k < n; ++k)
-    if (heap.contains(k)) order.push_back(k);
-  // Survivors in input order, then the eliminated, the last eliminated first.
-  for (std::uint32_t& k : order) k = index.original(k);
-  std::sort(order.begin(), order.end());
-  for (auto it = eliminated.rbegin(); it != eliminated.rend(); ++it) order.push_back(index.original(*it));
-  return order;
+                                           const WeightFunction& weight, ProgressReporter& progress, double done,
+                                           bool ordered, bool by_heap) {
+  RoundEliminator<D, Scaled> round(points, scale, domain, d_max, weight);
+  return round.run(keep, ordered, by_heap, progress, done);
 }
 
 template <int D>
 std::vector<std::uint32_t> eliminate_round(std::span<const Point<D>> points, std::span<const double> scale,
                                            std::size_t keep, const Domain<D>& domain, double d_max,
-                                           const WeightFunction& weight, ProgressReporter& progress, double done) {
-  return scale.empty() ? eliminate_round<D, false>(points, scale, keep, domain, d_max, weight, progress, done)
-                       : eliminate_round<D, true>(points, scale, keep, domain, d_max, weight, progress, done);
+                                           const WeightFunction& weight, ProgressReporter& progress, double done,
+                                           bool ordered, bool by_heap) {
+  return scale.empty()
+             ? eliminate_round<D, false>(points, scale, keep, domain, d_max, weight, progress, done, ordered, by_heap)
+             : eliminate_round<D, true>(points, scale, keep, domain, d_max, weight, progress, done, ordered, by_heap);
 }
 
 void validate(const EliminationWeights& w) {
@@ -319,15 +562,11 @@ void validate(const EliminationWeights& w) {
     throw InvalidArgument("elimination: gamma must be positive and finite, got " + detail::format_number(w.gamma));
 }
 
-}  // namespace
-
-namespace detail {
-
 template <int D>
-std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, std::span<const double> scale,
-                                             std::size_t count, const Domain<D>& domain, double d_max,
-                                             const EliminationWeights& weights, bool progressive, int growth_dim,
-                                             const Progress& progress) {
+std::vector<std::uint32_t> eliminate_all(std::span<const Point<D>> points, std::span<const double> scale,
+                                         std::size_t count, const Domain<D>& domain, double d_max,
+                                         const EliminationWeights& weights, bool progressive, int growth_dim,
+                                         const Progress& progress, bool by_heap) {
   const double ratio = static_cast<double>(count) / static_cast<double>(points.size());
   const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
   const WeightFunction first(d_max, d_min, weights.alpha);
@@ -338,7 +577,8 @@ std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, s
     for (std::size_t size = count; size >= 2; size /= 2) removals += static_cast<double>(size - size / 2);
   ProgressReporter reporter(progress, removals);
   double done = 0;
-  std::vector<std::uint32_t> kept = eliminate_round<D>(points, scale, count, domain, d_max, first, reporter, done);
+  std::vector<std::uint32_t> kept =
+      eliminate_round<D>(points, scale, count, domain, d_max, first, reporter, done, /*ordered=*/false, by_heap);
   done += static_cast<double>(points.size() - count);
   kept.resize(count);
   if (!progressive) {
@@ -358,13 +598,33 @@ std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, s
     const std::vector<std::uint32_t> order =
         eliminate_round<D>(std::span<const Point<D>>(out.data(), size),
                            std::span<const double>(out_scale.data(), scale.empty() ? 0 : size), size / 2, domain, d_max,
-                           weight, reporter, done);
+                           weight, reporter, done, /*ordered=*/true, by_heap);
     done += static_cast<double>(size - size / 2);
     for (std::size_t i = 0; i < size; ++i) round[i] = kept[order[i]];
     std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), kept.begin());
   }
   reporter.finish();
   return kept;
+}
+
+}  // namespace
+
+namespace detail {
+
+template <int D>
+std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, std::span<const double> scale,
+                                             std::size_t count, const Domain<D>& domain, double d_max,
+                                             const EliminationWeights& weights, bool progressive, int growth_dim,
+                                             const Progress& progress) {
+  return eliminate_all<D>(points, scale, count, domain, d_max, weights, progressive, growth_dim, progress, false);
+}
+
+template <int D>
+std::vector<std::uint32_t> eliminate_indices_by_heap(std::span<const Point<D>> points, std::span<const double> scale,
+                                                     std::size_t count, const Domain<D>& domain, double d_max,
+                                                     const EliminationWeights& weights, bool progressive,
+                                                     int growth_dim) {
+  return eliminate_all<D>(points, scale, count, domain, d_max, weights, progressive, growth_dim, {}, true);
 }
 
 void validate_elimination_weights(const EliminationWeights& weights) { validate(weights); }
@@ -494,6 +754,9 @@ PointSet<D> elimination(const EliminationParams& params, const SamplingConstrain
   template std::vector<std::uint32_t> detail::eliminate_indices<D>(                                                 \
       std::span<const Point<D>>, std::span<const double>, std::size_t, const Domain<D>&, double,                    \
       const EliminationWeights&, bool, int, const Progress&);                                                       \
+  template std::vector<std::uint32_t> detail::eliminate_indices_by_heap<D>(                                         \
+      std::span<const Point<D>>, std::span<const double>, std::size_t, const Domain<D>&, double,                    \
+      const EliminationWeights&, bool, int);                                                                        \
   template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                   \
   template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, \
                                     bool, const Progress&);

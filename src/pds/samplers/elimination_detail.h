@@ -28,6 +28,16 @@ std::vector<std::uint32_t> eliminate_indices(std::span<const Point<D>> points, s
                                              const EliminationWeights& weights, bool progressive, int growth_dim,
                                              const Progress& progress = {});
 
+/// The same elimination with every removal taken from a heap, one at a time
+/// (the paper's loop, as cySampleElim.h runs it): eliminate_indices removes
+/// most candidates in sweeps instead, and must give exactly these indices in
+/// this order. For tests.
+template <int D>
+std::vector<std::uint32_t> eliminate_indices_by_heap(std::span<const Point<D>> points, std::span<const double> scale,
+                                                     std::size_t count, const Domain<D>& domain, double d_max,
+                                                     const EliminationWeights& weights, bool progressive,
+                                                     int growth_dim);
+
 /// Throws InvalidArgument for weights out of range.
 void validate_elimination_weights(const EliminationWeights& weights);
 

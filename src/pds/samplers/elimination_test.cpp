@@ -9,6 +9,7 @@
 #include <numbers>
 #include <set>
 
+#include "elimination_detail.h"
 #include "pds/analysis/distance.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
@@ -77,6 +78,53 @@ TEST(Elimination, KeepsWhatTheBruteForceAlgorithmKeeps) {
     const PointSet<3> candidates3 = white_noise<3>({.count = 200}, cube, 6);
     const PointSet<3> kept3 = eliminate(candidates3, 45, cube, {}, false);
     EXPECT_GE(shared<3>(kept3, reference_survivors(candidates3, 45, cube)), 43u) << cube;
+  }
+}
+
+// The sweeps remove candidates in another order than the heap, but the same
+// ones, with the same weights: the indices and their order must be equal,
+// on white noise, on a lattice where every weight ties, with duplicates,
+// with per-point scales, across a torus's seam and in a period shorter than
+// the reach.
+template <int D>
+void expect_sweeps_match_the_heap(const PointSet<D>& points, std::size_t keep, const Domain<D>& domain,
+                                  std::span<const double> scale, double d_max) {
+  for (bool progressive : {false, true}) {
+    const auto swept = detail::eliminate_indices<D>(points, scale, keep, domain, d_max, {}, progressive, D);
+    const auto heap = detail::eliminate_indices_by_heap<D>(points, scale, keep, domain, d_max, {}, progressive, D);
+    EXPECT_EQ(swept, heap) << domain << " keep " << keep << " of " << points.size() << " progressive " << progressive
+                           << " scaled " << !scale.empty();
+  }
+}
+
+template <int D>
+void sweeps_match_the_heap_on(const Domain<D>& domain, std::size_t keep, std::uint64_t seed) {
+  const double d_max = 2.0 * max_packing_radius(domain.volume(), keep, D);
+  PointSet<D> noise = white_noise<D>({.count = 5 * keep}, domain, seed);
+  expect_sweeps_match_the_heap<D>(noise, keep, domain, {}, d_max);
+  // Duplicates: a pair at distance 0 and equal weights.
+  for (std::size_t i = 0; i < noise.size() / 10; ++i) noise[noise.size() - 1 - i] = noise[i];
+  expect_sweeps_match_the_heap<D>(noise, keep, domain, {}, d_max);
+  std::vector<double> scale(noise.size());
+  Rng rng(seed, {7});
+  for (double& s : scale) s = 1.0 + 2.0 * rng.uniform();
+  expect_sweeps_match_the_heap<D>(noise, keep, domain, scale, d_max);
+}
+
+TEST(Elimination, SweepsRemoveWhatTheHeapRemovesInItsOrder) {
+  for (bool torus : {false, true}) {
+    sweeps_match_the_heap_on<1>(Domain<1>{{-2}, {1}, torus}, 300, 1);
+    sweeps_match_the_heap_on<2>(Domain<2>{{-1, 2}, {0.5, 3}, torus}, 700, 2);
+    sweeps_match_the_heap_on<2>(Domain<2>{{0, 0}, {1, 0.05}, torus}, 400, 3);  // a period shorter than the reach
+    sweeps_match_the_heap_on<3>(Domain<3>{{0, 0, 0}, {1, 0.7, 1.2}, torus}, 500, 4);
+    sweeps_match_the_heap_on<5>(Domain<5>::unit(torus), 300, 5);
+    // A lattice: on a torus every candidate has the same weight at the start.
+    const auto square = Domain<2>::unit(torus);
+    PointSet<2> lattice;
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 40; ++j) lattice.push_back({(i + 0.5) / 40, (j + 0.5) / 40});
+    for (std::size_t keep : {100u, 400u, 799u})
+      expect_sweeps_match_the_heap<2>(lattice, keep, square, {}, 2.0 * max_packing_radius(1.0, keep, 2));
   }
 }
 
