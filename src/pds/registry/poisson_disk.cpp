@@ -219,7 +219,7 @@ const Method& elimination_method() {
       // conformance test asks (index of dispersion 0.60-0.79 in 4D-8D,
       // against below 0.6); the sampler itself takes every dimension.
       .dims = {1, 3},
-      .memory_ratio = 23,
+      .memory_ratio = 16,
       .params = {{"candidates", 5, 1, 100, false, "white-noise candidates as a multiple of the count"},
                  {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},

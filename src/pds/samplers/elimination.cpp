@@ -359,8 +359,7 @@ class RoundEliminator {
                   double d_max, const WeightFunction& weight)
       : index_(domain, points, d_max * (Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0)),
         weight_(weight),
-        weights_(index_.size(), 0),
-        rank_(index_.size()) {
+        weights_(index_.size(), 0) {
     const std::size_t n = index_.size();
     if constexpr (Scaled) {
       scale_.resize(n);
@@ -368,7 +367,6 @@ class RoundEliminator {
     }
     // Each pair once, its term added to both (sums are exact).
     for (std::uint32_t k = 0; k < n; ++k) {
-      rank_[k] = k;
       Weight sum = 0;
       const std::size_t count = index_.gather(k, near_);
       for (const Near& m : std::span(near_.data(), count))
@@ -387,8 +385,14 @@ class RoundEliminator {
   std::vector<std::uint32_t> run(std::size_t keep, bool ordered, bool by_heap, ProgressReporter& progress,
                                  double done) {
     const std::size_t total = index_.size();
-    removed_.reserve(total - keep);
-    std::vector<std::uint32_t> ranked;
+    // Only an ordered round keeps a record of each removal (16 bytes): the
+    // first round of 5N candidates would hold 4N of them for nothing.
+    ordered_ = ordered;
+    if (ordered) {
+      rank_.resize(total);
+      for (std::uint32_t k = 0; k < total; ++k) rank_[k] = k;
+      removed_.reserve(total - keep);
+    }
     while (index_.size() > keep) {
       const std::size_t live = index_.size(), to_remove = live - keep;
       // A band costs a sweep over the live candidates; the heap costs a cache
@@ -397,22 +401,16 @@ class RoundEliminator {
         finish_with_heap(to_remove, progress, done);
         break;
       }
-      ranked.resize(live);
-      for (std::uint32_t k = 0; k < live; ++k) ranked[k] = k;
-      const auto kth = ranked.begin() + static_cast<std::ptrdiff_t>(to_remove - 1);
-      std::nth_element(ranked.begin(), kth, ranked.end(),
-                       [&](std::uint32_t a, std::uint32_t b) { return above(a, b); });
-      const std::uint32_t t_index = *kth;
-      const Weight t_weight = weights_[t_index];
-      const std::size_t before = removed_.size();
+      const auto [t_weight, t_index] = kth_highest(to_remove);
+      const std::size_t before = removals_;
       for (std::uint32_t k = 0; k < live; ++k)
         if (weights_[k] != kGone && at_least(k, t_weight, t_index)) settle(k, t_weight, t_index);
       // The top candidate is a local maximum above the threshold, so a band
       // removes at least one; and never more than the heap would.
-      if (removed_.size() == before || removed_.size() - before > to_remove)
-        throw Failure("elimination: a band removed " + std::to_string(removed_.size() - before) + " of " +
+      if (removals_ == before || removals_ - before > to_remove)
+        throw Failure("elimination: a band removed " + std::to_string(removals_ - before) + " of " +
                       std::to_string(to_remove) + " candidates (internal error)");
-      progress.update(done + static_cast<double>(removed_.size()));
+      progress.update(done + static_cast<double>(removals_));
       compact();
     }
     std::vector<std::uint32_t> order;
@@ -481,7 +479,7 @@ class RoundEliminator {
       }
       for (const Near& m : std::span(near_.data(), count))
         if (weights_[m.index] != kGone) weights_[m.index] -= term(y, m.index, m.d2);
-      removed_.push_back({weights_[y], rank_[y], index_.original(y)});
+      record(y, weights_[y]);
       weights_[y] = kGone;
       stack_.pop_back();
     }
@@ -490,9 +488,9 @@ class RoundEliminator {
   void finish_with_heap(std::size_t to_remove, ProgressReporter& progress, double done) {
     WeightHeap heap(weights_);  // the index holds only live candidates
     for (std::size_t i = 0; i < to_remove; ++i) {
-      progress.update(done + static_cast<double>(removed_.size()));
+      progress.update(done + static_cast<double>(removals_));
       const auto [w, gone] = heap.pop();
-      removed_.push_back({w, rank_[gone], index_.original(gone)});
+      record(gone, w);
       weights_[gone] = kGone;
       const std::size_t count = index_.gather(gone, near_);
       for (const Near& m : std::span(near_.data(), count))
@@ -505,17 +503,42 @@ class RoundEliminator {
     compact();
   }
 
+  // The live candidate of the k-th highest priority (k >= 1), by a radix
+  // select on the weights, 16 bits a pass, then the ties in position order:
+  // no copy of the weights or of their indices.
+  std::pair<Weight, std::uint32_t> kth_highest(std::size_t k) {
+    Weight prefix = 0;  // the high bits of the answer found so far
+    std::vector<std::size_t> count(std::size_t{1} << 16);
+    for (int shift = 48; shift >= 0; shift -= 16) {
+      std::fill(count.begin(), count.end(), 0);
+      const Weight high_mask = shift == 48 ? 0 : ~Weight{0} << (shift + 16);
+      for (const Weight w : weights_)
+        if ((w & high_mask) == prefix) ++count[(w >> shift) & 0xffff];
+      std::size_t digit = 0xffff;
+      while (count[digit] < k) k -= count[digit--];
+      prefix |= static_cast<Weight>(digit) << shift;
+    }
+    // The k-th smallest position among the weights equal to prefix.
+    for (std::uint32_t at = 0;; ++at)
+      if (weights_[at] == prefix && --k == 0) return {prefix, at};
+  }
+
+  void record(std::uint32_t k, Weight weight) {
+    ++removals_;
+    if (ordered_) removed_.push_back({weight, rank_[k], index_.original(k)});
+  }
+
   // Drops the removed candidates from the index and the arrays beside it, so
   // later sweeps and scans read only live ones.
   void compact() {
     index_.compact([&](std::uint32_t k) { return weights_[k] != kGone; },
                    [&](std::uint32_t from, std::uint32_t to) {
                      weights_[to] = weights_[from];
-                     rank_[to] = rank_[from];
+                     if (ordered_) rank_[to] = rank_[from];
                      if constexpr (Scaled) scale_[to] = scale_[from];
                    });
     weights_.resize(index_.size());
-    rank_.resize(index_.size());
+    if (ordered_) rank_.resize(index_.size());
     if constexpr (Scaled) scale_.resize(index_.size());
   }
 
@@ -523,8 +546,10 @@ class RoundEliminator {
   WeightFunction weight_;
   std::vector<double> scale_;
   std::vector<Weight> weights_;  // kGone once removed
-  std::vector<std::uint32_t> rank_;
-  std::vector<Removal> removed_;
+  bool ordered_ = false;
+  std::size_t removals_ = 0;
+  std::vector<std::uint32_t> rank_;  // ordered rounds only
+  std::vector<Removal> removed_;     // ordered rounds only
   std::vector<Near> near_;
   std::vector<std::uint32_t> stack_;
 };
