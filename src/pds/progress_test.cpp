@@ -62,7 +62,8 @@ TEST_P(ProgressOfMethod, CancellationStopsTheRun) {
 }
 
 std::vector<std::string> reporting_methods() {
-  std::vector<std::string> out = {"best-candidate", "bridson", "dart-throwing", "elimination"};
+  std::vector<std::string> out = {"best-candidate", "bridson",       "dart-throwing", "elimination",
+                                  "ebeida",         "maximal-darts", "wei"};
   for (const Method& m : methods())
     if (m.name == "jones" || m.name == "fpo") out.push_back(m.name);  // with the CGAL component
   return out;

@@ -9,12 +9,16 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
 struct EbeidaParams {
   double radius = 0.01;                          // minimum distance between samples, > 0
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
+  // Optional progress (samples placed, against the usual count at the radius)
+  // and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// Maximal Poisson disk sampling as in M. S. Ebeida, S. A. Mitchell, A. Patney,

@@ -8,6 +8,7 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -15,6 +16,9 @@ struct MaximalDartsParams {
   double radius = 0.01;                          // minimum distance between samples, > 0
   int threads = 0;                               // 0: all hardware threads; the output is the same for every count
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
+  // Optional progress (samples placed, against the usual count at the radius,
+  // reported between the parallel phases) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// Maximal Poisson disk sampling with the statistics of sequential dart

@@ -6,6 +6,7 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -33,6 +34,10 @@ struct WeiParams {
   int windows = 64;
   int threads = 0;                               // worker threads, 0 = all hardware threads; never changes the output
   std::uint64_t max_points = kDefaultMaxPoints;  // refuse radii whose densest packing exceeds this
+  // Optional progress (per time window, between the parallel phases: level 0
+  // counts for 90% of the total, the finer levels share the rest) and
+  // cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// The largest `levels` and `windows` wei accepts.

@@ -83,7 +83,8 @@ const Method& wei_method() {
                                      static_cast<int>(r.param("levels", WeiParams{}.levels)),
                                      static_cast<int>(r.param("windows", WeiParams{}.windows)),
                                      r.threads,
-                                     r.max_points};
+                                     r.max_points,
+                                     r.progress};
               return wei(params, domain, r.seed);
             });
           },
@@ -114,7 +115,7 @@ const Method& ebeida_method() {
       .memory_ratio = 11,
       .run =
           [](const GenerateRequest& r) {
-            const EbeidaParams params{*r.radius, r.max_points};
+            const EbeidaParams params{*r.radius, r.max_points, r.progress};
             return run_typed<kMinDim, kEbeidaWeiMaxDim>(
                 r, [&](const auto& domain) { return ebeida(params, domain, r.seed); });
           },
@@ -148,7 +149,7 @@ const Method& maximal_darts_method() {
       .memory_ratio = 4,
       .run =
           [](const GenerateRequest& r) {
-            const MaximalDartsParams params{*r.radius, r.threads, r.max_points};
+            const MaximalDartsParams params{*r.radius, r.threads, r.max_points, r.progress};
             return run_typed<2, 3>(r, [&](const auto& domain) { return maximal_darts(params, domain, r.seed); });
           },
   };

@@ -152,7 +152,12 @@ class MaximalDartsSampler {
 
  public:
   MaximalDartsSampler(const MaximalDartsParams& params, const Domain<D>& domain, std::uint64_t seed)
-      : domain_(domain), r_(params.radius), r2_(params.radius * params.radius), threads_(params.threads) {
+      : domain_(domain),
+        r_(params.radius),
+        r2_(params.radius * params.radius),
+        threads_(params.threads),
+        progress_(params.progress),
+        reporter_(params.progress, typical_count(sizing_volume(domain, params.radius), params.radius, D)) {
     double cells = 1.0, scale = 0.0;
     for (int a = 0; a < D; ++a) {
       // Slightly more cells than extent sqrt(D) / r: a cell's diagonal stays
@@ -203,7 +208,7 @@ class MaximalDartsSampler {
   }
 
   PointSet<D> run(std::uint64_t seed) {
-    if (fallback_) return ebeida<D>({r_, std::numeric_limits<std::uint64_t>::max()}, domain_, seed);
+    if (fallback_) return ebeida<D>({r_, std::numeric_limits<std::uint64_t>::max(), progress_}, domain_, seed);
     for (level_ = 0;; ++level_) {
       if (level_ > kMaxLevel + kMaxFinalRounds)
         throw Failure("maximal-darts: " + std::to_string(open_units()) + " sub-cells still open after " +
@@ -218,6 +223,7 @@ class MaximalDartsSampler {
           level_ == 0 ? std::span<const double>(kFirstLevelWindows) : std::span<const double>(kLevelWindows);
       for (std::size_t w = 0; w < windows.size(); ++w) run_window(w, windows[w]);
     }
+    reporter_.finish();
     return std::move(samples_);
   }
 
@@ -374,6 +380,7 @@ class MaximalDartsSampler {
     for (Chunk& chunk : chunks_) {
       chunk.base = total;
       total += chunk.kept;
+      reporter_.update(static_cast<double>(total));  // between parallel phases: may throw Cancelled
     }
     samples_.resize(total);
     for_chunks([&](std::size_t, Chunk& chunk) {
@@ -581,6 +588,8 @@ class MaximalDartsSampler {
   const Domain<D>& domain_;
   double r_, r2_, cover2_ = 0.0;
   int threads_;
+  Progress progress_;  // for the fallback to ebeida
+  ProgressReporter reporter_;
   bool fallback_ = false;
   int level_ = 0;
   std::array<int, D> delay_{};     // levels an axis waits before it is split (detail::quadtree_axis_delays)

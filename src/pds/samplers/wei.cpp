@@ -86,6 +86,7 @@ namespace {
 
 constexpr int kMaxLevels = kWeiMaxLevels;
 constexpr int kMaxWindows = kWeiMaxWindows;
+constexpr double kProgressTotal = 1000.0;  // progress in thousandths of the run
 
 /// The darts of one unit (a level-0 cell, with its active fine cells above
 /// level 0) in one pass: a Poisson(active) number, each at a uniform time,
@@ -172,7 +173,11 @@ class WeiSampler {
 
  public:
   WeiSampler(const WeiParams& params, const Domain<D>& domain, std::uint64_t seed)
-      : params_(params), domain_(domain), seed_(seed), r2_(params.radius * params.radius) {
+      : params_(params),
+        domain_(domain),
+        seed_(seed),
+        r2_(params.radius * params.radius),
+        progress_(params.progress, kProgressTotal) {
     const double r = params.radius;
     double total = 1.0;
     for (int i = 0; i < D; ++i) {
@@ -214,6 +219,7 @@ class WeiSampler {
       }
       run_level(level);
     }
+    progress_.finish();
     active_ = {};  // freed before the output is built
     PointSet<D> points;
     std::size_t count = 0;
@@ -498,13 +504,24 @@ class WeiSampler {
     const std::size_t groups = group_count();
     for (int pass = 0; pass < params_.trials; ++pass) {
       schedule(level, pass);
-      for (int w = 0; w < params_.windows; ++w)
+      for (int w = 0; w < params_.windows; ++w) {
         for (const std::size_t g : group_order(level, pass, w))
           run_group(level, pass, w, static_cast<std::size_t>(w) * groups + g);
+        report(level, pass * params_.windows + w + 1);
+      }
     }
     // Freed before the next refine; `events_ = {}` would only clear it (it
     // picks the initializer-list assignment).
     std::vector<std::uint32_t>().swap(events_);
+  }
+
+  /// Progress after `windows` windows of `level`: level 0 (most of the
+  /// darts) is the first 90%, each finer level an equal part of the rest.
+  void report(int level, int windows) {
+    const double in_level = static_cast<double>(windows) / (params_.trials * params_.windows);
+    const double done = level == 0 ? 0.9 * in_level
+                                   : 0.9 + 0.1 * (level - 1 + in_level) / std::max(1, params_.levels - 1);
+    progress_.update(done * kProgressTotal);
   }
 
   /// True if one sample's disk contains the whole box [lo, hi].
@@ -594,6 +611,7 @@ class WeiSampler {
   const Domain<D>& domain_;
   std::uint64_t seed_;
   double r2_;
+  ProgressReporter progress_;
   std::array<int, D> n_, reach_, period_, groups_, full_;
   std::array<double, D> edge_;
   std::array<std::size_t, D> stride_;
