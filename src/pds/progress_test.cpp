@@ -63,7 +63,7 @@ TEST_P(ProgressOfMethod, CancellationStopsTheRun) {
 
 std::vector<std::string> reporting_methods() {
   std::vector<std::string> out = {"best-candidate", "bridson",       "dart-throwing", "elimination",
-                                  "ebeida",         "maximal-darts", "wei"};
+                                  "ebeida",         "maximal-darts", "wei",           "dunbar-humphreys"};
   for (const Method& m : methods())
     if (m.name == "jones" || m.name == "fpo") out.push_back(m.name);  // with the CGAL component
   return out;

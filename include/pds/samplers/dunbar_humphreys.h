@@ -9,6 +9,7 @@
 #include "pds/domain.h"
 #include "pds/limits.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -21,6 +22,9 @@ struct DunbarHumphreysParams {
   // 2: the same sectors, each new sample uniform over all free annuli at once
   // (dart throwing's statistics; slower).
   int variant = 0;
+  // Optional progress (samples placed, against the usual count at the radius)
+  // and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// D. Dunbar and G. Humphreys, "A spatial data structure for fast Poisson-disk

@@ -40,7 +40,8 @@ const Method& dunbar_humphreys_method() {
                   "(dart-throwing statistics)"}},
       .run =
           [](const GenerateRequest& r) {
-            const DunbarHumphreysParams params{*r.radius, r.max_points, static_cast<int>(r.param("variant", 0))};
+            const DunbarHumphreysParams params{*r.radius, r.max_points, static_cast<int>(r.param("variant", 0)),
+                                               r.progress};
             return PointCloud::from<2>(dunbar_humphreys(params, r.domain<2>(), r.seed));
           },
   };

@@ -72,11 +72,11 @@ using Code = u128;
 // common at 10^5 samples).
 template <int D>
 constexpr int kMaxLevel = 128 / D - 1;
-constexpr double kFirstLevelTime = 1.5;  // expected darts per cell at level 0 (tuned, docs/ebeida.md)
-constexpr double kLevelTime = 0.5;       // expected darts per sub-cell at every further level
-constexpr double kWindow = 0.5;          // darts are settled window by window in time
+constexpr double kFirstLevelTime = 1.5;       // expected darts per cell at level 0 (tuned, docs/ebeida.md)
+constexpr double kLevelTime = 0.5;            // expected darts per sub-cell at every further level
+constexpr double kWindow = 0.5;               // darts are settled window by window in time
 constexpr std::uint32_t kReportEvery = 1024;  // open cells settled between progress reports
-constexpr int kMaxDepth = 2000;          // a chain of ever earlier darts (measured: 14 at 10^6); keeps the stack small
+constexpr int kMaxDepth = 2000;  // a chain of ever earlier darts (measured: 14 at 10^6); keeps the stack small
 // Open sub-cells per grid cell at any level (measured peaks: 0.8 in 2D, 1.6
 // in 3D, 4.5 in 4D, where a cell has 16 children; unit torus, 2,000 and
 // 20,000 samples).

@@ -519,8 +519,8 @@ class WeiSampler {
   /// darts) is the first 90%, each finer level an equal part of the rest.
   void report(int level, int windows) {
     const double in_level = static_cast<double>(windows) / (params_.trials * params_.windows);
-    const double done = level == 0 ? 0.9 * in_level
-                                   : 0.9 + 0.1 * (level - 1 + in_level) / std::max(1, params_.levels - 1);
+    const double done =
+        level == 0 ? 0.9 * in_level : 0.9 + 0.1 * (level - 1 + in_level) / std::max(1, params_.levels - 1);
     progress_.update(done * kProgressTotal);
   }
 

@@ -56,6 +56,7 @@
 #include "pds/rng.h"
 #include "pds/samplers/dunbar_humphreys.h"
 #include "pds/samplers/random.h"
+#include "sample_progress.h"
 
 namespace pds::detail::dh {
 
@@ -307,7 +308,9 @@ template <class Kernel>
   // (FrontOrder), which keeps the grid rows and points being touched in cache.
   FrontOrder order(points.size());
   std::size_t head = 0, ahead = 0;
+  ProgressReporter progress = sample_progress(params, domain);
   while (order.next(points.size(), head, ahead)) {
+    if ((head & (kReportEvery - 1)) == 0) progress.update(static_cast<double>(points.size()));
     const Point<2> p = points[head];
     nb.blocked = 0;
     if (prefetch && ahead < points.size()) grid.prefetch_window(points[ahead], reach);
@@ -381,6 +384,7 @@ template <class Kernel>
                                       0.5 * vy + sin60 * vx));
     }
   }
+  progress.finish();
   return points;
 }
 

@@ -37,6 +37,7 @@
 #include "pds/error.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
+#include "sample_progress.h"
 #include "scalloped_region.h"
 
 namespace pds::detail::dh {
@@ -119,7 +120,9 @@ PointSet<2> global_scalloped_sampling(const DunbarHumphreysParams& params, const
   std::vector<std::int32_t> neighbours;
   std::vector<std::array<double, 3>> offsets;
   std::uint64_t rejected = 0;
-  while (areas.total() > 0.0) {
+  ProgressReporter progress = sample_progress(params, domain);
+  for (std::uint64_t round = 0; areas.total() > 0.0; ++round) {
+    if ((round & (kReportEvery - 1)) == 0) progress.update(static_cast<double>(points.size()));
     const std::size_t pick = areas.find(rng.uniform() * areas.total());
     const double stored = areas.weight(pick);
     if (stored <= 0.0) continue;  // only if rounding in find() stepped onto an empty leaf
@@ -145,6 +148,7 @@ PointSet<2> global_scalloped_sampling(const DunbarHumphreysParams& params, const
     if (m > 1 && rng.uniform() * m >= 1.0) continue;
     add(q);
   }
+  progress.finish();
   return points;
 }
 
@@ -170,7 +174,9 @@ PointSet<2> scalloped_sector_sampling(const DunbarHumphreysParams& params, const
   ScallopedRegion region;
   std::vector<std::int32_t> neighbours;        // samples within 3r of the front sample, and its new ones
   std::vector<std::array<double, 3>> offsets;  // (distance^2, dx, dy) of the neighbours found in the grid
-  while (!front.empty()) {
+  ProgressReporter progress = sample_progress(params, domain);
+  for (std::uint64_t round = 0; !front.empty(); ++round) {
+    if ((round & (kReportEvery - 1)) == 0) progress.update(static_cast<double>(points.size()));
     // A random front sample, removed from the front (swap with the last).
     const std::size_t pick = rng.below(front.size());
     const std::int32_t pi = front[pick];
@@ -197,6 +203,7 @@ PointSet<2> scalloped_sector_sampling(const DunbarHumphreysParams& params, const
       region.remove_disk(domain.delta(p[0], q[0], 0), domain.delta(p[1], q[1], 1), r);
     }
   }
+  progress.finish();
   return points;
 }
 
