@@ -342,8 +342,8 @@ class WeightHeap {
 //   them goes, and none of them can be the top while it is there.
 // - The heap's removals come in strictly decreasing priority, and a weight
 //   only falls. So with T the K-th highest priority now (K removals still to
-//   make), the heap's removals of priority >= T are fewer than K, all of
-//   them within this round.
+//   make), the heap's removals of priority >= T are at most K (each is a
+//   candidate of priority >= T now), all of them within this round.
 // A band sweeps the candidates of priority >= T in memory order and settles
 // each: remove it if it is a local maximum, else first settle its heaviest
 // heavier neighbour, until it is gone or below T. That removes exactly the
