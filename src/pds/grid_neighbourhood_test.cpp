@@ -117,6 +117,19 @@ void check_windows(const Layout<D>& l) {
                                               2 * reach[a] + 1 >= l.cells[a]));
       EXPECT_EQ(seen, expected) << describe(l);
       EXPECT_EQ(w.seam, seam) << describe(l);
+      if (!w.seam) {
+        // Rows: each starts a run of count[0] consecutive cells; together
+        // they are the window's cells, in for_each_cell's order.
+        std::vector<std::size_t> by_cell, by_row;
+        hood.for_each_cell(w, [&](std::size_t index, const std::array<int, D>&) {
+          by_cell.push_back(index);
+          return true;
+        });
+        hood.for_each_row(w, [&](std::size_t first) {
+          for (int k = 0; k < w.count[0]; ++k) by_row.push_back(first + static_cast<std::size_t>(k));
+        });
+        EXPECT_EQ(by_row, by_cell) << describe(l);
+      }
     }
 }
 
