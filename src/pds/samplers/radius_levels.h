@@ -90,6 +90,13 @@ class RadiusLevels {
     }
   }
 
+  /// conflicts() then, if none, insert(); returns whether x was stored.
+  bool insert_if_free(const Point<D>& x, double r) {
+    if (conflicts(x, r)) return false;
+    insert(x, r);
+    return true;
+  }
+
   int levels() const { return static_cast<int>(levels_.size()); }
 
  private:
