@@ -5,22 +5,33 @@
 // graphics, ACM TOG 5(1), 1986), with the radius a field r(x).
 //
 // Method: one accepted-set object (ConstrainedSet below) decides whether a
-// point may join: inside the mask, then no conflict under the pair rule of
-// samplers/constraints.h, found by the radius-level index of
-// radius_levels.h. Bridson's loop proposes candidates around active samples;
-// dart throwing proposes uniform darts. Both run on one random stream from
-// the seed.
+// point may join: not in the index's cover (a cell wholly inside some
+// sample's own ball: a conflict whatever the point's radius), inside the
+// mask, then no conflict under the pair rule of samplers/constraints.h,
+// found by the radius-level index (flat_levels.h in 1 to 3 dimensions,
+// radius_levels.h from 4). Bridson's loop proposes candidates around active
+// samples; dart throwing proposes uniform darts. Both run on one random
+// stream from the seed. The mask and the field are read only where the
+// cover does not decide (the pair rule does not need r(x) there).
+//
+// Speed without changing a number drawn: Bridson's shell offsets are drawn
+// ahead in batches from a copy of the stream (the same numbers and tests as
+// one by one, a rejected draw overwritten instead of a mispredicted branch;
+// the stream is then advanced to where the offsets taken leave it), and the
+// darts are drawn ahead from a copy with their words of the cover fetched
+// early. The output is the same bytes as the plain loop's.
 //
 // Guarantees: see samplers/constrained.h. The pair rule is decided as
 // d2 < max(r_a, r_b)^2 with d2 from Domain::distance2, the arithmetic the
 // tests' all-pairs oracle uses.
 //
-// Complexity: a query reads about 3^D cells of its own radius level, and as
-// many of each other level flagged in its cell (levels a factor sqrt(2)
-// apart: 2 log2(rmax/rmin) + 1 of them; in a smooth field a query searches
-// one level); an insert flags the cells of the other levels around it.
-// Memory: the level grids with a 32-bit mask a cell, the finest with cells
-// of edge sqrt(2) rmin. Measured: docs/benchmarks.md, "Variable density".
+// Complexity: a candidate or dart the cover decides costs one bit; the others
+// read a fixed list of cells of their own radius level (24 in 2D) and the
+// levels flagged near them (levels a factor sqrt(2) apart: about
+// 2 log2(rmax/rmin) + 1 of them; in a smooth field mostly none); an insert
+// sets the cover's bits within its radius and flags the other levels around
+// it. Memory and measured speed: flat_levels.h and docs/benchmarks.md,
+// "Variable density".
 //
 // Limits: not maximal (Bridson's k candidates and dart throwing's failure
 // bound both stop short); the candidate shell is drawn by rejection from a
@@ -69,8 +80,10 @@ class LinkedLevels {
   };
   LinkedLevels(const Domain<D>& domain, double rmin, double rmax) : index_(domain, rmin, rmax) {}
   Query query(const Point<D>& x, double r, int) const { return {x, r, 0}; }
-  void prefetch(const Query&) const {}
-  void prefetch_around(const Point<D>&, double, int) const {}
+  struct Spot {};
+  Spot spot(const Point<D>&) const { return {}; }
+  bool covered(const Spot&) const { return false; }
+  void prefetch(const Spot&) const {}
   bool insert_if_free(const Query& q) { return index_.insert_if_free(q.x, q.r); }
   void insert(const Point<D>& x, double r) { index_.insert(x, r); }
 
@@ -115,7 +128,16 @@ class ConstrainedSet {
 
   /// Adds x (in the domain) if the mask allows it and it conflicts with no
   /// sample; returns whether it did.
-  bool try_add(const Point<D>& x) {
+  /// First the index's cover: where a sample's own ball holds x's whole
+  /// cell, x conflicts whatever r(x) is, and neither the mask nor the field
+  /// is read (most candidates and darts end there).
+  [[gnu::always_inline]] bool try_add(const Point<D>& x) { return try_add(x, index_.spot(x)); }
+
+  [[gnu::always_inline]] bool try_add(const Point<D>& x, const typename Index::Spot& spot) {
+    return !index_.covered(spot) && try_add_uncovered(x);
+  }
+
+  bool try_add_uncovered(const Point<D>& x) {
     if (constraints_.inside && !constraints_.inside(x)) return false;
     const double r = radius_at(x);
     const auto q = index_.query(x, r, hint_);
@@ -126,18 +148,13 @@ class ConstrainedSet {
     return true;
   }
 
-  /// Asks for the cells that Bridson's candidates around `centre` read.
-  void prefetch_around(const Point<D>& centre, double r) const { index_.prefetch_around(centre, r, hint_); }
-
   /// Darts uniform over the domain from rng, tested in turn by
   /// try_add_dart() as try_add(uniform_point(rng, domain)) would: drawn
-  /// kDartsAhead ahead from a copy of the stream, their mask and field read
-  /// and their cells fetched early (a dart lands anywhere, so it would
-  /// otherwise wait for its own cache misses). rng takes the copy's state
-  /// after each dart as it is tested, so it stays where drawing them one by
-  /// one leaves it; call
-  /// start_darts() again after drawing anything else from it. A NaN of the
-  /// field is reported when its dart is tested, as it was read then.
+  /// kDartsAhead ahead from a copy of the stream, their words of the cover
+  /// fetched early (a dart lands anywhere, so it would otherwise wait for its
+  /// own cache miss). rng makes a dart's D draws as it is tested, so it stays
+  /// where drawing them one by one leaves it; call start_darts() again after
+  /// drawing anything else from it.
   void start_darts(const Rng& rng) {
     ahead_ = rng;
     for (Dart& dart : darts_) draw_ahead(dart);
@@ -147,16 +164,8 @@ class ConstrainedSet {
   bool try_add_dart(Rng& rng) {
     Dart& dart = darts_[next_dart_];
     next_dart_ = (next_dart_ + 1) % kDartsAhead;
-    rng = dart.after;
-    bool added = false;
-    if (dart.inside) {
-      if (std::isnan(dart.field)) throw InvalidArgument("radius field: NaN at " + format_point(dart.q.x));
-      if (index_.insert_if_free(dart.q)) {
-        points_.push_back(dart.q.x);
-        radii_.push_back(dart.q.r);
-        added = true;
-      }
-    }
+    for (int i = 0; i < D; ++i) rng.next();  // the draws of the dart's D coordinates
+    const bool added = try_add(dart.x, dart.spot);
     draw_ahead(dart);
     return added;
   }
@@ -190,20 +199,14 @@ class ConstrainedSet {
 
   static constexpr std::size_t kDartsAhead = 16;
   struct Dart {
-    typename Index::Query q;
-    bool inside;
-    double field;  // r(x) as read (NaN reported when tested)
-    Rng after{0};  // the stream after drawing the dart
+    Point<D> x;
+    typename Index::Spot spot;
   };
 
   void draw_ahead(Dart& dart) {
-    const Point<D> x = uniform_point(ahead_, domain_);
-    dart.after = ahead_;
-    dart.inside = !constraints_.inside || constraints_.inside(x);
-    dart.field = dart.inside && constraints_.radius ? constraints_.radius(x) : rmin_;
-    const double r = std::isnan(dart.field) ? rmin_ : std::clamp(dart.field, rmin_, rmax_);
-    dart.q = index_.query(x, r, hint_);
-    if (dart.inside) index_.prefetch(dart.q);
+    dart.x = uniform_point(ahead_, domain_);
+    dart.spot = index_.spot(dart.x);
+    index_.prefetch(dart.spot);
   }
 
   const Domain<D>& domain_;
@@ -305,7 +308,6 @@ PointSet<D> bridson(const BridsonParams& params, const SamplingConstraints<D>& c
       const std::size_t slot = static_cast<std::size_t>(rng.uniform() * static_cast<double>(active.size()));
       const Point<D> centre = active[slot].p;
       const double r = active[slot].r;
-      set.prefetch_around(centre, r);
       offsets.start(rng, r);
       bool placed = false;
       for (int t = 0; t < params.k && !placed; ++t) {

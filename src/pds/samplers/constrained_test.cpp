@@ -114,10 +114,13 @@ bool brute_force_conflict(const auto& domain, const auto& stored, const std::vec
 // (conflicting among themselves too, unless `keep_rule`: then a point is
 // stored only where brute force finds it free, as the samplers store them),
 // then asks about `queries` others with radii drawn the same way: the index
-// must agree with brute force. Returns how many queries conflict.
+// must agree with brute force, and where it has a cover (flat_levels.h), a
+// point it calls covered must conflict whatever its radius (brute force
+// with the smallest, rmin). Returns how many queries conflict; `covered`
+// receives how many the cover decided.
 template <class Index, int D>
 int expect_index_matches_brute_force(const Domain<D>& domain, double rmin, double rmax, int stored_count, int queries,
-                                     int expected_levels, bool keep_rule = false) {
+                                     int expected_levels, bool keep_rule = false, int* covered = nullptr) {
   Index index(domain, rmin, rmax);
   EXPECT_EQ(index.levels(), expected_levels);
   Rng rng(17);
@@ -144,6 +147,12 @@ int expect_index_matches_brute_force(const Domain<D>& domain, double rmin, doubl
     EXPECT_EQ(index.conflicts(x, r), brute) << x << " r " << r;
     if (index.conflicts(x, r) != brute) break;
     conflicts += brute;
+    if constexpr (requires { index.covered(index.spot(x)); }) {
+      if (index.covered(index.spot(x))) {
+        EXPECT_TRUE(brute_force_conflict(domain, stored, radii, x, rmin)) << x << " covered";
+        if (covered) ++*covered;
+      }
+    }
   }
   return conflicts;
 }
@@ -195,17 +204,20 @@ TEST(Constrained, LevelIndexBeyondItsLastLevel) {
 // cells shared, the overflow index decides too); a box and a torus whose
 // bounds hold the origin (where an empty cell's zeros lie), axes a few cells
 // long (the margin wraps several times; 7 cells at the coarsest level), a
-// constant radius, and more levels than the 32 bits hold.
+// constant radius, and more levels than the 32 bits hold. Its cover is
+// checked on the way (every covered point conflicts), and must decide many.
 TEST(Constrained, FlatIndexFindsEveryConflict) {
   using Flat2 = detail::FlatLevels<2>;
   for (bool torus : {false, true}) {
     const Domain<2> wide{{-1, -0.3}, {0.5, 1}, torus};
     for (bool keep_rule : {false, true}) {
       // 13 levels: in 2D a level spans just under sqrt(2) (2 cell edges).
-      const int conflicts =
-          expect_index_matches_brute_force<Flat2>(wide, 0.002, 0.12, keep_rule ? 3000 : 150, 3000, 13, keep_rule);
+      int covered = 0;
+      const int conflicts = expect_index_matches_brute_force<Flat2>(wide, 0.002, 0.12, keep_rule ? 3000 : 150, 3000, 13,
+                                                                    keep_rule, &covered);
       EXPECT_GT(conflicts, 300);
       EXPECT_LT(conflicts, 2900);
+      EXPECT_GT(covered, conflicts / 3);
     }
     const Domain<2> narrow{{0, 0}, {1, 0.02}, torus};
     EXPECT_GT(expect_index_matches_brute_force<Flat2>(narrow, 0.0005, 0.006, 2000, 3000, 8, true), 300);

@@ -2,9 +2,19 @@
 // The neighbour index of the constrained samplers (constrained.cpp) in 1 to 3
 // dimensions: is a new point x with radius r in conflict with a stored one,
 // under the rule distance < max(r, r_q) (samplers/constraints.h)? It answers
-// exactly as RadiusLevels (radius_levels.h) does, point for point, so the
-// samplers' output does not depend on which index they use; this one is
-// built for speed, as the uniform Bridson's grid is (samplers/bridson.cpp).
+// exactly as RadiusLevels (radius_levels.h, 4 dimensions and more) does,
+// point for point, so the samplers' output does not depend on which index
+// they use; this one is built for speed, as the uniform Bridson's grid is
+// (samplers/bridson.cpp).
+//
+// The cover, asked first: a bit grid over the domain with cells of edge
+// about rmin / 3, a bit set where some sample's own ball (less a margin far
+// above rounding) holds the whole cell. A point in such a cell conflicts
+// with that sample whatever its own radius (distance < r_q <= max(r, r_q)),
+// so the samplers reject it before reading the mask or the field. In a
+// near-full set that is most queries (the benchmark's candidates and
+// restart darts: 95% at 10^5 samples, 94% at 10^6); the rest go to the
+// levels below.
 //
 // Radius levels as in RadiusLevels: level l holds radii in [s_l, s_(l+1)),
 // s_0 = rmin, s_(l+1) about sqrt(2) s_l (the last level up to rmax). Each
@@ -14,22 +24,22 @@
 // indices). A conflict within the level needs a distance below s_(l+1),
 // about two cell edges in 2D; s_(l+1) is set just below 2 edges there so the
 // cells a query can reach from each half of its cell (along each axis) are a
-// fixed list, the own cell first, then nearest first: 20 or 21 cells in 2D.
-// They are read two a vector, eight with one branch, from a grid padded with
-// a margin as wide as the list reaches, so no bounds are checked: on a box
-// the margin stays empty; on a torus it holds copies of the samples near
-// the opposite faces (their own coordinates, so the distance is the
-// domain's min-image one), and away from the faces the min-image correction
-// never applies and is left out (bridson.cpp's argument).
+// fixed list, the own cell first, then nearest first: 24 cells in 2D (16
+// for a constant radius, as bridson.cpp's). They are read two a vector,
+// eight with one branch, from a grid padded with a margin as wide as the
+// list reaches, so no bounds are checked: on a box the margin stays empty;
+// on a torus it holds copies of the samples near the opposite faces (their
+// own coordinates, so the distance is the domain's min-image one), and away
+// from the faces the min-image correction never applies and is left out
+// (bridson.cpp's argument).
 //
-// Each cell also keeps a bit per other level that may hold a conflicting
-// sample near it; an insert sets its level's bit in the cells of every other
-// level that it can reach (within its radius for finer levels, whose queries
-// have smaller radii; within the other level's largest radius for coarser
-// ones), so a query reads the bits of its own cell and searches only the
-// levels they name, cell by cell over the block its reach covers (in a
-// smooth field, no other level: the benchmark's field averages 1.0 levels a
-// query).
+// Each level also keeps a bit per other level, per block of 8 cells along
+// each axis, that may hold a conflicting sample near it; an insert sets its
+// level's bit in the blocks of every other level that it can reach (within
+// its radius for finer levels, whose queries have smaller radii; within the
+// other level's largest radius for coarser ones), so a query reads the bits
+// of its own block and searches only the levels they name, cell by cell
+// over the block its reach covers (in a smooth field, mostly none).
 //
 // Exactness: a stored sample is found whenever Domain::distance2 puts it
 // closer than max(r, r_q), the squared distance against the squared larger
@@ -39,10 +49,13 @@
 // point set given as fixed points, whose pairs are not checked) go to an
 // overflow RadiusLevels that queries also ask once it is not empty.
 //
-// Memory: the cells are allocated zeroed (calloc: pages the sampling never
-// touches, where the field puts no sample of that level, are never mapped);
-// a zero cell is empty (a stored radius is never 0). A level has
-// 2 / s_l^2 cells a unit area in 2D, 32 bytes each.
+// Memory: the level grids are mapped zeroed (mmap) and the kernel gives them
+// pages as they are first touched, where the field puts samples of the
+// level; a zero cell is empty (a stored radius is never 0). A level has
+// 2 / s_l^2 cells a unit area in 2D, 24 bytes each; grids up to 32 MB ask
+// for huge pages. The cover has 9 / rmin^2 bits a unit area in 2D (at most
+// 128 MiB: coarser cells beyond), mapped at once; the blocks' bits 4 bytes
+// a block.
 
 #include <sys/mman.h>
 
@@ -113,6 +126,29 @@ class FlatLevels {
       ends_.push_back(&level == &levels_.back() ? std::numeric_limits<double>::infinity() : level.bound);
       if (levels_.size() > 1) level.others.assign(level.blocks, 0);
     }
+    // The cover: cells of edge about rmin / kCoverSplit (coarser if there
+    // would be more than kMaxCoverBits).
+    double edge = rmin / kCoverSplit;
+    for (;;) {
+      double bits = 1.0;
+      for (int i = 0; i < D; ++i) bits *= std::ceil(domain.extent(i) / edge);
+      if (bits <= kMaxCoverBits) break;
+      edge *= 2.0;
+    }
+    std::size_t rows = 1;
+    for (int i = 0; i < D; ++i) {
+      cover_cells_[i] = static_cast<int>(std::ceil(domain.extent(i) / edge));
+      cover_inv_edge_[i] = cover_cells_[i] / domain.extent(i);
+      cover_edge_[i] = domain.extent(i) / cover_cells_[i];
+      if (i > 0) rows *= static_cast<std::size_t>(cover_cells_[i]);
+    }
+    cover_words_ = (static_cast<std::size_t>(cover_cells_[0]) + 63) / 64;
+    cover_row_stride_[0] = 0;
+    for (int i = 1; i < D; ++i)
+      cover_row_stride_[i] =
+          i == 1 ? cover_words_ : cover_row_stride_[i - 1] * static_cast<std::size_t>(cover_cells_[i - 1]);
+    // Mapped at once: the cover is read everywhere, by every dart.
+    cover_ = zeroed<std::uint64_t>(rows * cover_words_, true);
   }
 
   // Where x falls: its level, squared radius, cell (of the padded grid),
@@ -125,10 +161,16 @@ class FlatLevels {
     std::array<int, D> coords;  // the cell's, unpadded
     unsigned half;
     // 0: the plain difference, no empty cell can pass for a conflict; 1: the
-    // plain difference, empty cells masked (x lies within the level's bound
-    // of the origin, where an empty cell's zeros are); 2: with the torus's
-    // min-image correction (near its faces), empty cells masked.
+    // plain difference, empty cells masked (x lies within r of the origin,
+    // where an empty cell's zeros are); 2: with the torus's min-image
+    // correction (near its faces), empty cells masked.
     int mode;
+  };
+
+  // A cell of the cover: its word and bit.
+  struct Spot {
+    std::size_t word;
+    std::uint64_t bit;
   };
 
   /// True if a stored point q has distance(x, q) < max(r, r_q).
@@ -162,32 +204,32 @@ class FlatLevels {
       const double d = 0.0 - x[i];
       origin2 = i == 0 ? d * d : origin2 + d * d;
     }
-    q.mode = !interior ? 2 : origin2 < level.bound2 ? 1 : 0;
+    q.mode = !interior ? 2 : origin2 < q.r2 ? 1 : 0;
     return q;
   }
 
-  /// Asks for the cells the query will read first (a dart, drawn ahead).
-  void prefetch(const Query& q) const {
-    const Level& level = levels_[static_cast<std::size_t>(q.level)];
-    constexpr int kReach = 2;
-    const std::uintptr_t base = reinterpret_cast<std::uintptr_t>(level.grid.get() + q.cell);
-    std::array<int, D> o;
-    o.fill(-kReach);
-    o[0] = 0;
-    for (;;) {
-      std::ptrdiff_t row = -kReach * static_cast<std::ptrdiff_t>(sizeof(Cell));
-      for (int i = 1; i < D; ++i) row += o[i] * static_cast<std::ptrdiff_t>(level.stride[i] * sizeof(Cell));
-      for (std::ptrdiff_t b = 0; b < (2 * kReach + 1) * static_cast<std::ptrdiff_t>(sizeof(Cell)) + 63; b += 64)
-        __builtin_prefetch(reinterpret_cast<const char*>(base + static_cast<std::uintptr_t>(row + b)));
-      int axis = 1;
-      while (axis < D && ++o[axis] > kReach) {
-        o[axis] = -kReach;
-        ++axis;
+  /// x's cell of the cover.
+  [[gnu::always_inline]] Spot spot(const Point<D>& x) const {
+    Spot s{0, 0};
+    for (int i = 0; i < D; ++i) {
+      const int c = std::min(static_cast<int>((x[i] - domain_.lo[i]) * cover_inv_edge_[i]), cover_cells_[i] - 1);
+      if (i == 0) {
+        s.word = static_cast<std::size_t>(c >> 6);
+        s.bit = std::uint64_t{1} << (c & 63);
+      } else {
+        s.word += static_cast<std::size_t>(c) * cover_row_stride_[i];
       }
-      if (axis == D) break;
     }
-    if (!level.others.empty()) __builtin_prefetch(&level.others[block_of(level, q)]);
+    return s;
   }
+
+  /// True when the spot lies wholly within some sample's own ball: a point
+  /// there conflicts with that sample whatever its radius (distance < r_q <=
+  /// max(r, r_q)). Once true, true for good (bits are only set).
+  [[gnu::always_inline]] bool covered(const Spot& s) const { return cover_[s.word] & s.bit; }
+
+  /// Asks for the cover's word of a spot (a dart, drawn ahead).
+  void prefetch(const Spot& s) const { __builtin_prefetch(&cover_[s.word]); }
 
   /// conflicts() then, if none, insert(); returns whether x was stored.
   [[gnu::always_inline]] bool insert_if_free(const Query& q) {
@@ -204,47 +246,27 @@ class FlatLevels {
 
   int levels() const { return static_cast<int>(levels_.size()); }
 
-  /// Asks for the cells that queries around `centre` (radius r), as
-  /// Bridson's candidates, will read: picks jump around the front, and
-  /// otherwise every candidate waits for its own cache misses in turn.
-  void prefetch_around(const Point<D>& centre, double r, int hint) const {
-    const Query q = query(centre, r, hint);
-    const Level& level = levels_[static_cast<std::size_t>(q.level)];
-    constexpr int kReach = D == 1 ? 8 : D == 2 ? 5 : 2;
-    const std::uintptr_t base = reinterpret_cast<std::uintptr_t>(level.grid.get() + q.cell);
-    std::array<int, D> o;
-    o.fill(-kReach);
-    o[0] = 0;
-    for (;;) {
-      std::ptrdiff_t row = -kReach * static_cast<std::ptrdiff_t>(sizeof(Cell));
-      for (int i = 1; i < D; ++i) row += o[i] * static_cast<std::ptrdiff_t>(level.stride[i] * sizeof(Cell));
-      // A prefetch never faults: lines past the grid's ends are harmless.
-      for (std::ptrdiff_t b = 0; b < (2 * kReach + 1) * static_cast<std::ptrdiff_t>(sizeof(Cell)) + 64; b += 64)
-        __builtin_prefetch(reinterpret_cast<const char*>(base + static_cast<std::uintptr_t>(row + b)));
-      int axis = 1;
-      while (axis < D && ++o[axis] > kReach) {
-        o[axis] = -kReach;
-        ++axis;
-      }
-      if (axis == D) break;
-    }
-  }
-
  private:
   // As RadiusLevels: 32 levels fit the 32 bits of Cell::others; larger radii
   // share the last level (exact, only slower).
   static constexpr double kLevelRatio = 1.4142135623730951;
   static constexpr int kMaxLevels = 32;
+  // Arrays of up to this many bytes ask for huge pages (fewer TLB misses
+  // and page faults); the kernel then zeroes them whole, which larger grids,
+  // most of whose pages the field may never touch, would pay for.
+  static constexpr std::size_t kHugePagesUpTo = std::size_t{32} << 20;
   // Level::others has a word per block of kBlockCells cells along each axis.
-  static constexpr int kBlockShift = 2;
+  static constexpr int kBlockShift = 3;
   static constexpr int kBlockCells = 1 << kBlockShift;
   // Cells read with one branch (bridson.cpp: 8 beat 4 and 16).
   static constexpr std::size_t kBlock = 8;
 
-  // A cell holds its sample's coordinates (zeros when empty); its squared
-  // radius is kept apart (Level::radius2, 0 when empty), read only where
-  // the coordinates alone do not decide.
-  using Cell = Point<D>;
+  // A cell holds its sample's coordinates and squared radius; zeros when
+  // empty (a radius is never 0).
+  struct Cell {
+    Point<D> p;
+    double r2;
+  };
 
   // Zeroed pages from mmap, which the kernel maps on first touch (where the
   // field puts samples of the level, and around).
@@ -255,10 +277,14 @@ class FlatLevels {
     }
   };
   template <class T>
-  static std::unique_ptr<T[], Unmap> zeroed(std::size_t count) {
+  static std::unique_ptr<T[], Unmap> zeroed(std::size_t count, bool populate = false) {
     const std::size_t bytes = count * sizeof(T);
-    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | (populate ? MAP_POPULATE : 0),
+                   -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
+#ifdef MADV_HUGEPAGE
+    if (!populate && bytes <= kHugePagesUpTo) madvise(p, bytes, MADV_HUGEPAGE);
+#endif
     return std::unique_ptr<T[], Unmap>(static_cast<T*>(p), Unmap{bytes});
   }
 
@@ -271,15 +297,28 @@ class FlatLevels {
     std::array<unsigned, D> interior{};  // torus: cells c with c - margin < interior skip the min-image step
     std::array<std::vector<std::ptrdiff_t>, (1u << D)> lists;  // per half-cell: offsets to read, own first
     std::unique_ptr<Cell[], Unmap> grid;
-    std::unique_ptr<double[], Unmap> radius2;  // by cell: the sample's squared radius, 0 when empty
-    double bound2 = 0;                         // bound^2: no conflict within the level at or beyond it
-    double widen = 0;                          // added to a reach against the rounding of the cell arithmetic
+    double bound2 = 0;  // bound^2: no conflict within the level at or beyond it
+    double widen = 0;   // added to a reach against the rounding of the cell arithmetic
     // A bit per other level that may hold a sample in conflict with a query
     // here, per block of 2 cells along each axis.
     std::vector<std::uint32_t> others;
     std::array<std::size_t, D> others_stride{};
     std::size_t blocks = 0;
   };
+
+  // floor and ceil as ints (inline: std::floor is a call where SSE4.1 is
+  // not assumed), of v clamped into +-1e9, beyond every cell count: a reach
+  // of many periods or past a box's faces comes to the same cells.
+  static int floor_int(double v) {
+    v = std::clamp(v, -1e9, 1e9);
+    const int i = static_cast<int>(v);
+    return i - (v < i);
+  }
+  static int ceil_int(double v) {
+    v = std::clamp(v, -1e9, 1e9);
+    const int i = static_cast<int>(v);
+    return i + (v > i);
+  }
 
   [[noreturn]] static void throw_too_many(double radius) {
     throw InvalidArgument("radius " + format_number(radius) + " needs more than " + std::to_string(kMaxGridCells) +
@@ -376,7 +415,6 @@ class FlatLevels {
     }
     level.blocks = blocks;
     level.grid = zeroed<Cell>(stride);
-    level.radius2 = zeroed<double>(stride);
     level.bound2 = level.bound * level.bound;
   }
 
@@ -414,28 +452,22 @@ class FlatLevels {
 
   void insert(const Query& q) {
     Level& level = levels_[static_cast<std::size_t>(q.level)];
-    if (level.radius2[q.cell] != 0.0) {
+    if (level.grid[q.cell].r2 != 0.0) {
       // Only where the pair rule was not enforced (fixed points).
       if (!overflow_) overflow_ = std::make_unique<RadiusLevels<D>>(domain_, starts_.front(), rmax_);
       overflow_->insert(q.x, q.r);
     } else {
-      level.grid[q.cell] = q.x;
-      level.radius2[q.cell] = q.r2;
+      level.grid[q.cell] = Cell{q.x, q.r2};
       if (domain_.periodic) copy_to_margin(level, q);
     }
+    cover(q.x, q.r);
     const std::uint32_t bit = std::uint32_t{1} << q.level;
     for (int l = 0; l < levels(); ++l) {
       if (l == q.level) continue;
       Level& other = levels_[static_cast<std::size_t>(l)];
       // A query at a finer level conflicts within r; at a coarser one, within
       // its own radius, below that level's bound.
-      if (!cells_near(other, q.x, l < q.level ? q.r : other.bound)) continue;
-      // Blocks of kBlockCells cells (on a torus whose count is not a
-      // multiple, one block may come twice).
-      for (auto& axis : axes_) {
-        for (int& c : axis) c >>= kBlockShift;
-        axis.erase(std::unique(axis.begin(), axis.end()), axis.end());
-      }
+      if (!cells_near(other, q.x, l < q.level ? q.r : other.bound, kBlockShift)) continue;
       for_each_row(other.others_stride, 0, [&](std::size_t row) {
         for (const int c : axes_[0]) other.others[row + static_cast<std::size_t>(c)] |= bit;
         return true;
@@ -465,21 +497,17 @@ class FlatLevels {
   // Whether the sample of a cell (padded index) conflicts with the query; an
   // empty cell never does.
   [[gnu::always_inline]] bool hit(const Query& q, const Level& level, std::size_t cell) const {
-    const double rq2 = level.radius2[cell];
-    return rq2 != 0.0 && domain_.distance2(q.x, level.grid[cell]) < std::max(q.r2, rq2);
+    const Cell& c = level.grid[cell];
+    return c.r2 != 0.0 && domain_.distance2(q.x, c.p) < std::max(q.r2, c.r2);
   }
 
   // The cells of the list around the query's cell, kBlock at a time with one
   // branch a block, two cells a vector: the arithmetic is Domain::distance2's,
-  // term for term, lane by lane. Within the level every radius lies below
-  // its bound, so a lane at d2 >= bound^2 is no conflict, and one at
-  // d2 < r2 is one (d2 < max(r2, r_q^2)) when its cell holds a sample; in
-  // between the sample's radius decides: those blocks are read again, cell
-  // by cell (d2 < max(r2, r_q^2) with Domain::distance2), once no lane has
-  // decided a conflict. An empty cell holds zeros, so its d2 is |x|^2: below
-  // bound^2 only when x lies within the bound of the origin, and then
-  // (Masked) every lane below bound^2 is read again, where an empty cell
-  // never conflicts. With MinImage the torus correction is applied as in
+  // term for term, lane by lane. A lane conflicts when d2 < r2 or d2 < the
+  // sample's r2. An empty cell holds zeros: its r2 of 0 never passes
+  // (d2 >= 0), and its coordinates give d2 = |x|^2, which passes d2 < r2 only
+  // when x lies within r of the origin: then (Masked) a lane also needs a
+  // sample in the cell. With MinImage the torus correction is applied as in
   // Domain::delta (the two masks exclude each other; always Masked, as an
   // image of the origin may be near); without it the difference is taken as
   // is, the same arithmetic where the correction never applies (away from
@@ -489,16 +517,15 @@ class FlatLevels {
     typedef double Pair __attribute__((vector_size(16)));
     typedef std::int64_t Mask __attribute__((vector_size(16)));
     const Cell* base = level.grid.get() + q.cell;
-    const Pair r2 = {q.r2, q.r2}, bound2 = {level.bound2, level.bound2};
-    std::size_t again = list.size();  // the first block to read again
+    const Pair r2 = {q.r2, q.r2}, zero = {0.0, 0.0};
     for (std::size_t j = 0; j < list.size(); j += kBlock) {
-      Mask closer = {0, 0}, near = {0, 0};
+      Mask closer = {0, 0};
       for (std::size_t t = j; t < j + kBlock; t += 2) {
         const Cell& a = base[list[t]];
         const Cell& b = base[list[t + 1]];
         Pair s;
         for (int i = 0; i < D; ++i) {
-          Pair d = Pair{a[i], b[i]} - q.x[i];
+          Pair d = Pair{a.p[i], b.p[i]} - q.x[i];
           if constexpr (MinImage) {
             const Pair half = {half_[i], half_[i]}, extent = {domain_.extent(i), domain_.extent(i)};
             const Mask above = d > half, below = d < -half;
@@ -507,27 +534,28 @@ class FlatLevels {
           }
           s = i == 0 ? d * d : s + d * d;
         }
-        if constexpr (!Masked) closer |= s < r2;
-        near |= s < bound2;
+        const Pair rq2 = {a.r2, b.r2};
+        if constexpr (Masked)
+          closer |= ((s < r2) & (rq2 > zero)) | (s < rq2);
+        else
+          closer |= (s < r2) | (s < rq2);
       }
-      if constexpr (!Masked)
-        if (closer[0] | closer[1]) return true;
-      if ((near[0] | near[1]) && again == list.size()) again = j;
+      if (closer[0] | closer[1]) return true;
     }
-    for (std::size_t t = again; t < list.size(); ++t)
-      if (hit(q, level, static_cast<std::size_t>(static_cast<std::ptrdiff_t>(q.cell) + list[t]))) return true;
     return false;
   }
 
   // Fills axes_ with the real cells of `level`, per axis, that a point
   // closer than `reach` to x can lie in, each once (wrapped on a torus,
-  // clipped in a box); false when there are none.
-  bool cells_near(const Level& level, const Point<D>& x, double reach) const {
+  // clipped in a box); false when there are none. With a shift, the blocks
+  // of 2^shift cells that hold them instead (on a torus whose count is not a
+  // multiple, a block may come twice).
+  bool cells_near(const Level& level, const Point<D>& x, double reach, int shift = 0) const {
     reach += level.widen;
     for (int i = 0; i < D; ++i) {
       const double u = x[i] - domain_.lo[i];
-      int a = static_cast<int>(std::floor((u - reach) * level.inv_edge[i]));
-      int b = static_cast<int>(std::floor((u + reach) * level.inv_edge[i]));
+      int a = floor_int((u - reach) * level.inv_edge[i]);
+      int b = floor_int((u + reach) * level.inv_edge[i]);
       const int n = level.cells[i];
       if (domain_.periodic) {
         if (b - a + 1 >= n) {
@@ -540,14 +568,106 @@ class FlatLevels {
         if (a > b) return false;
       }
       auto& axis = axes_[i];
-      axis.resize(static_cast<std::size_t>(b - a + 1));
-      int c = ((a % n) + n) % n;
-      for (int& entry : axis) {
-        entry = c;
-        if (++c == n) c = 0;
+      axis.clear();
+      int c = a;
+      if (c < 0 || c >= n) c = ((c % n) + n) % n;
+      for (int left = b - a + 1; left > 0;) {
+        // From c to the end of its block, or of the axis.
+        const int block = c >> shift, end = std::min((block + 1) << shift, n);
+        axis.push_back(shift ? block : c);
+        const int step = std::min(end - c, left);
+        left -= step;
+        c += step;
+        if (c == n) c = 0;
       }
     }
     return true;
+  }
+
+  // Sets the bits of the cover's cells that lie wholly within rho of x,
+  // rho = r less a margin far above the rounding of the cell arithmetic and
+  // of Domain::distance2 (so every point of such a cell has a computed
+  // distance below r from x). Rows (axis 0) are spans of bits; on a torus
+  // cells are taken at the image nearest x's, and the distance to that image
+  // bounds the min-image one.
+  void cover(const Point<D>& x, double r) {
+    const double rho = r * (1.0 - 1e-7) - 64.0 * std::numeric_limits<double>::epsilon() * scale_;
+    if (!(rho > 0.0)) return;
+    // On a torus a period shorter than the ball is left uncovered (nothing
+    // is lost but speed), so cells are taken within a period either way.
+    for (int i = 0; i < D; ++i)
+      if (domain_.periodic && 2.0 * rho >= domain_.extent(i)) return;
+    std::array<int, D> first, last, at;
+    for (int i = 0; i < D; ++i) {
+      const double u = x[i] - domain_.lo[i];
+      first[i] = floor_int((u - rho) * cover_inv_edge_[i]);
+      last[i] = floor_int((u + rho) * cover_inv_edge_[i]);
+      if (!domain_.periodic) {
+        first[i] = std::max(first[i], 0);
+        last[i] = std::min(last[i], cover_cells_[i] - 1);
+      }
+      at[i] = first[i];
+    }
+    for (;;) {
+      // The largest squared distance from x over the row's band along axes 1..D-1.
+      double far2 = 0.0;
+      std::size_t row = 0;
+      for (int i = 1; i < D; ++i) {
+        const double a = at[i] * cover_edge_[i] + domain_.lo[i] - x[i];
+        const double b = (at[i] + 1) * cover_edge_[i] + domain_.lo[i] - x[i];
+        const double f = std::max(std::abs(a), std::abs(b));
+        far2 += f * f;
+        int c = at[i];  // within a period of [0, n) on a torus, itself in a box
+        if (c < 0) c += cover_cells_[i];
+        if (c >= cover_cells_[i]) c -= cover_cells_[i];
+        row += static_cast<std::size_t>(c) * cover_row_stride_[i];
+      }
+      if (far2 < rho * rho) cover_row(x, rho * rho - far2, row);
+      int axis = 1;
+      while (axis < D && ++at[axis] > last[axis]) {
+        at[axis] = first[axis];
+        ++axis;
+      }
+      if (axis == D) break;
+    }
+  }
+
+  // Sets the bits of the row's cells (axis 0) whose span lies within
+  // sqrt(w2) of x[0] (the margin of cover() absorbs the rounding here).
+  void cover_row(const Point<D>& x, double w2, std::size_t row) {
+    const double w = std::sqrt(w2);
+    const double u = x[0] - domain_.lo[0];
+    int a = ceil_int((u - w) * cover_inv_edge_[0]);
+    int b = floor_int((u + w) * cover_inv_edge_[0]) - 1;
+    const int n = cover_cells_[0];
+    if (!domain_.periodic) {
+      a = std::max(a, 0);
+      b = std::min(b, n - 1);
+    }
+    if (a > b) return;
+    if (b - a + 1 >= n) {
+      set_bits(row, 0, n - 1);
+      return;
+    }
+    int start = a;  // within a period of [0, n): a cell of x's or next to it
+    if (start < 0) start += n;
+    if (start >= n) start -= n;
+    const int end = start + (b - a);
+    if (end < n) {
+      set_bits(row, start, end);
+    } else {
+      set_bits(row, start, n - 1);
+      set_bits(row, 0, end - n);
+    }
+  }
+
+  // Bits a to b (inclusive) of a row.
+  void set_bits(std::size_t row, int a, int b) {
+    for (int w = a >> 6; w <= b >> 6; ++w) {
+      const int lo = std::max(a - (w << 6), 0), hi = std::min(b - (w << 6), 63);
+      const std::uint64_t ones = ~std::uint64_t{0};
+      cover_[row + static_cast<std::size_t>(w)] |= (ones >> (63 - hi)) & (ones << lo);
+    }
   }
 
   // On a torus the margin mirrors the cells of the opposite faces: the
@@ -566,8 +686,7 @@ class FlatLevels {
     for (;;) {
       std::size_t index = 0;
       for (int i = 0; i < D; ++i) index += static_cast<std::size_t>(at[i]) * level.stride[i];
-      level.grid[index] = q.x;
-      level.radius2[index] = q.r2;
+      level.grid[index] = Cell{q.x, q.r2};
       int axis = 0;
       while (axis < D && (at[axis] += level.cells[axis]) >= level.padded[axis]) {
         at[axis] = first[axis];
@@ -587,6 +706,15 @@ class FlatLevels {
   std::array<std::vector<std::array<int, D>>, (1u << D)> scratch_;
   mutable std::array<std::vector<int>, D> axes_;  // cells_near()'s answer
   std::unique_ptr<RadiusLevels<D>> overflow_;
+  // The cover: a bit per cell of a grid of edge about rmin / kCoverSplit,
+  // set where a sample's own ball holds the whole cell (cover()).
+  static constexpr double kCoverSplit = 3.0;
+  static constexpr double kMaxCoverBits = 8.0 * (1 << 27);  // 128 MiB
+  std::array<int, D> cover_cells_{};
+  std::array<double, D> cover_inv_edge_{}, cover_edge_{};
+  std::array<std::size_t, D> cover_row_stride_{};  // words; axis 0 is the bit within the row
+  std::size_t cover_words_ = 0;                    // a row's
+  std::unique_ptr<std::uint64_t[], Unmap> cover_;
 };
 
 }  // namespace pds::detail
