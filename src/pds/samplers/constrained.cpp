@@ -17,9 +17,10 @@
 // Speed without changing a number drawn: Bridson's shell offsets are drawn
 // ahead in batches from a copy of the stream (the same numbers and tests as
 // one by one, a rejected draw overwritten instead of a mispredicted branch;
-// the stream is then advanced to where the offsets taken leave it), and the
-// darts are drawn ahead from a copy with their words of the cover fetched
-// early. The output is the same bytes as the plain loop's.
+// the stream is then advanced to where the offsets taken leave it), and
+// where the cover outgrows the caches near the core, the darts are drawn
+// ahead from a copy with their words of the cover fetched early. The output
+// is the same bytes as the plain loop's.
 //
 // Guarantees: see samplers/constrained.h. The pair rule is decided as
 // d2 < max(r_a, r_b)^2 with d2 from Domain::distance2, the arithmetic the
@@ -83,6 +84,7 @@ class LinkedLevels {
   struct Spot {};
   Spot spot(const Point<D>&) const { return {}; }
   bool covered(const Spot&) const { return false; }
+  std::size_t cover_bytes() const { return 0; }
   void prefetch(const Spot&) const {}
   bool insert_if_free(const Query& q) { return index_.insert_if_free(q.x, q.r); }
   void insert(const Point<D>& x, double r) { index_.insert(x, r); }
@@ -149,19 +151,22 @@ class ConstrainedSet {
   }
 
   /// Darts uniform over the domain from rng, tested in turn by
-  /// try_add_dart() as try_add(uniform_point(rng, domain)) would: drawn
-  /// kDartsAhead ahead from a copy of the stream, their words of the cover
-  /// fetched early (a dart lands anywhere, so it would otherwise wait for its
-  /// own cache miss). rng makes a dart's D draws as it is tested, so it stays
-  /// where drawing them one by one leaves it; call start_darts() again after
-  /// drawing anything else from it.
+  /// try_add_dart() as try_add(uniform_point(rng, domain)) would. Where the
+  /// cover is larger than 4 MB (beyond the caches near the core) they are
+  /// drawn kDartsAhead ahead from a copy of the stream, their words of the
+  /// cover fetched early (a dart lands anywhere, so it would otherwise wait
+  /// for its own cache miss); rng makes a dart's D draws as it is tested, so
+  /// it stays where drawing them one by one leaves it. Call start_darts()
+  /// again after drawing anything else from it.
   void start_darts(const Rng& rng) {
+    if (!darts_ahead_) return;
     ahead_ = rng;
     for (Dart& dart : darts_) draw_ahead(dart);
     next_dart_ = 0;
   }
 
   bool try_add_dart(Rng& rng) {
+    if (!darts_ahead_) return try_add(uniform_point(rng, domain_));
     Dart& dart = darts_[next_dart_];
     next_dart_ = (next_dart_ + 1) % kDartsAhead;
     for (int i = 0; i < D; ++i) rng.next();  // the draws of the dart's D coordinates
@@ -219,6 +224,9 @@ class ConstrainedSet {
   Rng ahead_{0};
   std::array<Dart, kDartsAhead> darts_{};
   std::size_t next_dart_ = 0;
+  // Drawn ahead only where the cover outgrows the caches near the core
+  // (measured: at 1 MB, drawing each dart twice cost more than it saved).
+  bool darts_ahead_ = index_.cover_bytes() > (std::size_t{4} << 20);
 };
 
 // Points uniform by volume in the shell [r, 2r] around the origin, by

@@ -7,13 +7,14 @@
 // they use; this one is built for speed, as the uniform Bridson's grid is
 // (samplers/bridson.cpp).
 //
-// The cover, asked first: a bit grid over the domain with cells of edge
-// about rmin / 3, a bit set where some sample's own ball (less a margin far
-// above rounding) holds the whole cell. A point in such a cell conflicts
+// The cover, asked first: a bit grid over the domain with cells about
+// rmin / 2.5 across its rows and rmin / 5 along them (a row's span is set a
+// word at a time, so the finer axis costs little), a bit set where some
+// sample's own ball (less a margin far above rounding) holds the whole cell. A point in such a cell conflicts
 // with that sample whatever its own radius (distance < r_q <= max(r, r_q)),
 // so the samplers reject it before reading the mask or the field. In a
 // near-full set that is most queries (the benchmark's candidates and
-// restart darts: 95% at 10^5 samples, 94% at 10^6); the rest go to the
+// restart darts: 96% at 10^5 samples, 94% at 10^6); the rest go to the
 // levels below.
 //
 // Radius levels as in RadiusLevels: level l holds radii in [s_l, s_(l+1)),
@@ -53,9 +54,9 @@
 // pages as they are first touched, where the field puts samples of the
 // level; a zero cell is empty (a stored radius is never 0). A level has
 // 2 / s_l^2 cells a unit area in 2D, 24 bytes each; grids up to 32 MB ask
-// for huge pages. The cover has 9 / rmin^2 bits a unit area in 2D (at most
-// 128 MiB: coarser cells beyond), mapped at once; the blocks' bits 4 bytes
-// a block.
+// for huge pages. The cover has 12.5 / rmin^2 bits a unit area in 2D (at
+// most 128 MiB: coarser cells beyond), mapped at once; the blocks' bits 4
+// bytes a block.
 
 #include <sys/mman.h>
 
@@ -128,16 +129,19 @@ class FlatLevels {
     }
     // The cover: cells of edge about rmin / kCoverSplit (coarser if there
     // would be more than kMaxCoverBits).
+    // Along axis 0, within a row of bits, cells kRowSplit times finer: the
+    // row's span is set in words, so they cost little to mark and leave
+    // less of each ball uncovered.
     double edge = rmin / kCoverSplit;
     for (;;) {
       double bits = 1.0;
-      for (int i = 0; i < D; ++i) bits *= std::ceil(domain.extent(i) / edge);
+      for (int i = 0; i < D; ++i) bits *= std::ceil(domain.extent(i) / (i == 0 ? edge / kRowSplit : edge));
       if (bits <= kMaxCoverBits) break;
       edge *= 2.0;
     }
     std::size_t rows = 1;
     for (int i = 0; i < D; ++i) {
-      cover_cells_[i] = static_cast<int>(std::ceil(domain.extent(i) / edge));
+      cover_cells_[i] = static_cast<int>(std::ceil(domain.extent(i) / (i == 0 ? edge / kRowSplit : edge)));
       cover_inv_edge_[i] = cover_cells_[i] / domain.extent(i);
       cover_edge_[i] = domain.extent(i) / cover_cells_[i];
       if (i > 0) rows *= static_cast<std::size_t>(cover_cells_[i]);
@@ -227,6 +231,9 @@ class FlatLevels {
   /// there conflicts with that sample whatever its radius (distance < r_q <=
   /// max(r, r_q)). Once true, true for good (bits are only set).
   [[gnu::always_inline]] bool covered(const Spot& s) const { return cover_[s.word] & s.bit; }
+
+  /// The cover's size in bytes.
+  std::size_t cover_bytes() const { return cover_.get_deleter().bytes; }
 
   /// Asks for the cover's word of a spot (a dart, drawn ahead).
   void prefetch(const Spot& s) const { __builtin_prefetch(&cover_[s.word]); }
@@ -708,7 +715,8 @@ class FlatLevels {
   std::unique_ptr<RadiusLevels<D>> overflow_;
   // The cover: a bit per cell of a grid of edge about rmin / kCoverSplit,
   // set where a sample's own ball holds the whole cell (cover()).
-  static constexpr double kCoverSplit = 3.0;
+  static constexpr double kCoverSplit = 2.5;
+  static constexpr double kRowSplit = 2.0;
   static constexpr double kMaxCoverBits = 8.0 * (1 << 27);  // 128 MiB
   std::array<int, D> cover_cells_{};
   std::array<double, D> cover_inv_edge_{}, cover_edge_{};
