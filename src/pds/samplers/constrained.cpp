@@ -101,7 +101,6 @@ class ConstrainedSet {
   using Index = std::conditional_t<(D <= 3), detail::FlatLevels<D>, LinkedLevels<D>>;
 
  public:
- public:
   ConstrainedSet(const char* method, double uniform_radius, const SamplingConstraints<D>& c, const Domain<D>& domain)
       : domain_(domain),
         constraints_(c),

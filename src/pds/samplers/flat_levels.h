@@ -127,11 +127,10 @@ class FlatLevels {
       ends_.push_back(&level == &levels_.back() ? std::numeric_limits<double>::infinity() : level.bound);
       if (levels_.size() > 1) level.others.assign(level.blocks, 0);
     }
-    // The cover: cells of edge about rmin / kCoverSplit (coarser if there
-    // would be more than kMaxCoverBits).
-    // Along axis 0, within a row of bits, cells kRowSplit times finer: the
-    // row's span is set in words, so they cost little to mark and leave
-    // less of each ball uncovered.
+    // The cover: cells of edge about rmin / kCoverSplit, and along axis 0
+    // (within a row of bits) kRowSplit times finer: a row's span is set a
+    // word at a time, so they cost little to mark and leave less of each
+    // ball uncovered. Coarser if there would be more than kMaxCoverBits.
     double edge = rmin / kCoverSplit;
     for (;;) {
       double bits = 1.0;
@@ -254,8 +253,8 @@ class FlatLevels {
   int levels() const { return static_cast<int>(levels_.size()); }
 
  private:
-  // As RadiusLevels: 32 levels fit the 32 bits of Cell::others; larger radii
-  // share the last level (exact, only slower).
+  // As RadiusLevels: 32 levels fit the 32 bits of Level::others; larger
+  // radii share the last level (exact, only slower).
   static constexpr double kLevelRatio = 1.4142135623730951;
   static constexpr int kMaxLevels = 32;
   // Arrays of up to this many bytes ask for huge pages (fewer TLB misses
@@ -304,10 +303,9 @@ class FlatLevels {
     std::array<unsigned, D> interior{};  // torus: cells c with c - margin < interior skip the min-image step
     std::array<std::vector<std::ptrdiff_t>, (1u << D)> lists;  // per half-cell: offsets to read, own first
     std::unique_ptr<Cell[], Unmap> grid;
-    double bound2 = 0;  // bound^2: no conflict within the level at or beyond it
-    double widen = 0;   // added to a reach against the rounding of the cell arithmetic
+    double widen = 0;  // added to a reach against the rounding of the cell arithmetic
     // A bit per other level that may hold a sample in conflict with a query
-    // here, per block of 2 cells along each axis.
+    // here, per block of kBlockCells cells along each axis.
     std::vector<std::uint32_t> others;
     std::array<std::size_t, D> others_stride{};
     std::size_t blocks = 0;
@@ -342,8 +340,12 @@ class FlatLevels {
     const double tolerance = 1e-6 * *std::min_element(edge.begin(), edge.end()) + 1e-12 * scale_;
     level.widen = tolerance + 1e-9 * level.bound;
     const double bound = level.bound;
-    std::array<int, D> reach;
-    for (int i = 0; i < D; ++i) reach[i] = static_cast<int>(std::floor((bound + tolerance) / edge[i])) + 1;
+    // The offsets whose cell-to-cell gap is below the bound (with the
+    // tolerance), GridNeighbourhood's over a box of the level's cells (on a
+    // torus the far images are the margin's copies), then for each half-cell
+    // those whose gap from that half is.
+    const GridNeighbourhood<D> layout(Domain<D>::box(domain_.lo, domain_.hi), level.cells);
+    const auto within = layout.stencil_within(bound + 2.0 * tolerance, 1e-4);
     for (unsigned half = 0; half < (1u << D); ++half) {
       const auto gap2 = [&](const Step& o) {
         double g2 = 0.0;
@@ -357,24 +359,9 @@ class FlatLevels {
         }
         return g2;
       };
-      std::vector<std::pair<double, Step>> list;
-      Step o;
-      for (int i = 0; i < D; ++i) o[i] = -reach[i];
-      for (;;) {
-        const double g2 = gap2(o);
-        bool own = true;
-        for (int i = 0; i < D; ++i) own &= o[i] == 0;
-        if (own)
-          list.push_back({-1.0, o});
-        else if (g2 < bound * bound)
-          list.push_back({g2, o});
-        int axis = 0;
-        while (axis < D && ++o[axis] > reach[axis]) {
-          o[axis] = -reach[axis];
-          ++axis;
-        }
-        if (axis == D) break;
-      }
+      std::vector<std::pair<double, Step>> list{{-1.0, Step{}}};  // the own cell first
+      for (const Step& o : within.steps)
+        if (const double g2 = gap2(o); g2 < bound * bound) list.push_back({g2, o});
       std::stable_sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
       level.lists[half].clear();
       for (const auto& [g2, step] : list)
@@ -422,7 +409,6 @@ class FlatLevels {
     }
     level.blocks = blocks;
     level.grid = zeroed<Cell>(stride);
-    level.bound2 = level.bound * level.bound;
   }
 
   std::size_t block_of(const Level& level, const Query& q) const {
