@@ -2,8 +2,9 @@
 // Bridson's and dart throwing's loops under SamplingConstraints: a radius
 // field r(x), a mask, fixed points (samplers/constraints.h states the pair
 // rule). One implementation for both, with a background index over radius
-// levels (src/pds/samplers/radius_levels.h); the uniform pds::bridson and
-// pds::dart_throwing stay the fast path when no constraint is given.
+// levels (src/pds/samplers/flat_levels.h in 1 to 3 dimensions,
+// radius_levels.h from 4); the uniform pds::bridson and pds::dart_throwing
+// stay the fast path when no constraint is given.
 
 #include <cstdint>
 
@@ -35,6 +36,9 @@ inline constexpr std::uint64_t kConstrainedRestartDarts = 10'000;
 /// points. Near-maximal, not proven maximal (as bridson()).
 /// params.radius is the uniform radius when constraints.radius is empty and
 /// is ignored otherwise; params.count is refused (the radius sizes the set).
+/// The mask and the field are read at a candidate only when no sample's own
+/// ball already holds it (then it conflicts whatever its radius), so a NaN
+/// of the field is found where it is read, not where no sample could go.
 /// Invalid (InvalidArgument): bad radius or bounds, k < 1, a count, a fixed
 /// point outside the domain, a field value NaN, too many grid cells.
 template <int D>

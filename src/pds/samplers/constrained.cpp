@@ -5,22 +5,34 @@
 // graphics, ACM TOG 5(1), 1986), with the radius a field r(x).
 //
 // Method: one accepted-set object (ConstrainedSet below) decides whether a
-// point may join: inside the mask, then no conflict under the pair rule of
-// samplers/constraints.h, found by the radius-level index of
-// radius_levels.h. Bridson's loop proposes candidates around active samples;
-// dart throwing proposes uniform darts. Both run on one random stream from
-// the seed.
+// point may join: not in the index's cover (a cell wholly inside some
+// sample's own ball: a conflict whatever the point's radius), inside the
+// mask, then no conflict under the pair rule of samplers/constraints.h,
+// found by the radius-level index (flat_levels.h in 1 to 3 dimensions,
+// radius_levels.h from 4). Bridson's loop proposes candidates around active
+// samples; dart throwing proposes uniform darts. Both run on one random
+// stream from the seed. The mask and the field are read only where the
+// cover does not decide (the pair rule does not need r(x) there).
+//
+// Speed without changing a number drawn: Bridson's shell offsets are drawn
+// ahead in batches from a copy of the stream (the same numbers and tests as
+// one by one, a rejected draw overwritten instead of a mispredicted branch;
+// the stream is then advanced to where the offsets taken leave it), and
+// where the cover outgrows the caches near the core, the darts are drawn
+// ahead from a copy with their words of the cover fetched early. The output
+// is the same bytes as the plain loop's.
 //
 // Guarantees: see samplers/constrained.h. The pair rule is decided as
 // d2 < max(r_a, r_b)^2 with d2 from Domain::distance2, the arithmetic the
 // tests' all-pairs oracle uses.
 //
-// Complexity: a query reads about 3^D cells of its own radius level, and as
-// many of each other level flagged in its cell (levels a factor sqrt(2)
-// apart: 2 log2(rmax/rmin) + 1 of them; in a smooth field a query searches
-// one level); an insert flags the cells of the other levels around it.
-// Memory: the level grids with a 32-bit mask a cell, the finest with cells
-// of edge sqrt(2) rmin. Measured: docs/benchmarks.md, "Variable density".
+// Complexity: a candidate or dart the cover decides costs one bit; the others
+// read a fixed list of cells of their own radius level (24 in 2D) and the
+// levels flagged near them (levels a factor sqrt(2) apart: about
+// 2 log2(rmax/rmin) + 1 of them; in a smooth field mostly none); an insert
+// sets the cover's bits within its radius and flags the other levels around
+// it. Memory and measured speed: flat_levels.h and docs/benchmarks.md,
+// "Variable density".
 //
 // Limits: not maximal (Bridson's k candidates and dart throwing's failure
 // bound both stop short); the candidate shell is drawn by rejection from a
@@ -30,12 +42,15 @@
 #include "pds/samplers/constrained.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
+#include "flat_levels.h"
 #include "pds/detail/format.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
@@ -55,9 +70,36 @@ std::string format_point(const Point<D>& p) {
   return s + ")";
 }
 
+// RadiusLevels behind FlatLevels's interface (4 dimensions and more).
+template <int D>
+class LinkedLevels {
+ public:
+  struct Query {
+    Point<D> x;
+    double r;
+    int level;
+  };
+  LinkedLevels(const Domain<D>& domain, double rmin, double rmax) : index_(domain, rmin, rmax) {}
+  Query query(const Point<D>& x, double r, int) const { return {x, r, 0}; }
+  struct Spot {};
+  Spot spot(const Point<D>&) const { return {}; }
+  bool covered(const Spot&) const { return false; }
+  std::size_t cover_bytes() const { return 0; }
+  void prefetch(const Spot&) const {}
+  bool insert_if_free(const Query& q) { return index_.insert_if_free(q.x, q.r); }
+  void insert(const Point<D>& x, double r) { index_.insert(x, r); }
+
+ private:
+  detail::RadiusLevels<D> index_;
+};
+
 // The samples so far (fixed ones first) and the test a new one must pass.
 template <int D>
 class ConstrainedSet {
+  // The flat grids in 1 to 3 dimensions; from 4 the linked grids of edge
+  // about r, whose 3^D blocks stay small (as bridson.cpp's ConflictGrid).
+  using Index = std::conditional_t<(D <= 3), detail::FlatLevels<D>, LinkedLevels<D>>;
+
  public:
   ConstrainedSet(const char* method, double uniform_radius, const SamplingConstraints<D>& c, const Domain<D>& domain)
       : domain_(domain),
@@ -87,12 +129,49 @@ class ConstrainedSet {
 
   /// Adds x (in the domain) if the mask allows it and it conflicts with no
   /// sample; returns whether it did.
-  bool try_add(const Point<D>& x) {
+  /// First the index's cover: where a sample's own ball holds x's whole
+  /// cell, x conflicts whatever r(x) is, and neither the mask nor the field
+  /// is read (most candidates and darts end there).
+  [[gnu::always_inline]] bool try_add(const Point<D>& x) { return try_add(x, index_.spot(x)); }
+
+  [[gnu::always_inline]] bool try_add(const Point<D>& x, const typename Index::Spot& spot) {
+    return !index_.covered(spot) && try_add_uncovered(x);
+  }
+
+  bool try_add_uncovered(const Point<D>& x) {
     if (constraints_.inside && !constraints_.inside(x)) return false;
     const double r = radius_at(x);
-    if (index_.conflicts(x, r)) return false;
-    add(x, r);
+    const auto q = index_.query(x, r, hint_);
+    hint_ = q.level;
+    if (!index_.insert_if_free(q)) return false;
+    points_.push_back(x);
+    radii_.push_back(r);
     return true;
+  }
+
+  /// Darts uniform over the domain from rng, tested in turn by
+  /// try_add_dart() as try_add(uniform_point(rng, domain)) would. Where the
+  /// cover is larger than 4 MB (beyond the caches near the core) they are
+  /// drawn kDartsAhead ahead from a copy of the stream, their words of the
+  /// cover fetched early (a dart lands anywhere, so it would otherwise wait
+  /// for its own cache miss); rng makes a dart's D draws as it is tested, so
+  /// it stays where drawing them one by one leaves it. Call start_darts()
+  /// again after drawing anything else from it.
+  void start_darts(const Rng& rng) {
+    if (!darts_ahead_) return;
+    ahead_ = rng;
+    for (Dart& dart : darts_) draw_ahead(dart);
+    next_dart_ = 0;
+  }
+
+  bool try_add_dart(Rng& rng) {
+    if (!darts_ahead_) return try_add(uniform_point(rng, domain_));
+    Dart& dart = darts_[next_dart_];
+    next_dart_ = (next_dart_ + 1) % kDartsAhead;
+    for (int i = 0; i < D; ++i) rng.next();  // the draws of the dart's D coordinates
+    const bool added = try_add(dart.x, dart.spot);
+    draw_ahead(dart);
+    return added;
   }
 
   std::size_t size() const { return points_.size(); }
@@ -122,31 +201,89 @@ class ConstrainedSet {
     radii_.push_back(r);
   }
 
+  static constexpr std::size_t kDartsAhead = 16;
+  struct Dart {
+    Point<D> x;
+    typename Index::Spot spot;
+  };
+
+  void draw_ahead(Dart& dart) {
+    dart.x = uniform_point(ahead_, domain_);
+    dart.spot = index_.spot(dart.x);
+    index_.prefetch(dart.spot);
+  }
+
   const Domain<D>& domain_;
   const SamplingConstraints<D>& constraints_;
   double rmin_, rmax_;
-  detail::RadiusLevels<D> index_;
+  Index index_;
+  int hint_ = 0;  // the level of the last query: a neighbour's is most often the same
   PointSet<D> points_;
   std::vector<double> radii_;
+  Rng ahead_{0};
+  std::array<Dart, kDartsAhead> darts_{};
+  std::size_t next_dart_ = 0;
+  // Drawn ahead only where the cover outgrows the caches near the core
+  // (measured: at 1 MB, drawing each dart twice cost more than it saved).
+  bool darts_ahead_ = index_.cover_bytes() > (std::size_t{4} << 20);
 };
 
+// Points uniform by volume in the shell [r, 2r] around the origin, by
+// rejection from the cube [-2r, 2r]^D, drawn ahead in batches from a copy of
+// the stream: the same numbers and the same tests as drawing them one by one
+// (so the same samples), but a rejected draw is overwritten by the next
+// instead of taking a branch that is mispredicted about every other draw
+// (41% are rejected in 2D). finish() leaves the stream where drawing the
+// offsets taken one by one would have left it.
 template <int D>
-double norm2(const Point<D>& v) {
-  double s = 0.0;
-  for (int i = 0; i < D; ++i) s += v[i] * v[i];
-  return s;
-}
-
-// A point uniform by volume in the shell [r, 2r] around the origin.
-template <int D>
-Point<D> shell_offset(Rng& rng, double r) {
-  for (;;) {
-    Point<D> v;
-    for (int i = 0; i < D; ++i) v[i] = rng.uniform(-2.0 * r, 2.0 * r);
-    const double n2 = norm2(v);
-    if (n2 >= r * r && n2 <= 4.0 * r * r) return v;
+class ShellOffsets {
+ public:
+  /// Offsets of radius r from rng's current state on.
+  void start(const Rng& rng, double r) {
+    ahead_ = rng;
+    r_ = r;
+    next_ = count_ = 0;
   }
-}
+
+  [[gnu::always_inline]] const Point<D>& take() {
+    if (next_ == count_) refill();
+    taken_ = next_;
+    return batch_[next_++];
+  }
+
+  /// The stream after the last offset taken (at least one): from the
+  /// batch's start, as many draws as were made up to that offset.
+  void finish(Rng& rng) const {
+    rng = batch_start_;
+    for (unsigned j = 0; j < tries_[taken_] * D; ++j) rng.next();
+  }
+
+ private:
+  void refill() {
+    const double r = r_;
+    batch_start_ = ahead_;
+    std::size_t n = 0;
+    unsigned tries = 0;
+    while (n < kBatch) {
+      Point<D> v;
+      for (int i = 0; i < D; ++i) v[i] = ahead_.uniform(-2.0 * r, 2.0 * r);
+      double n2 = 0.0;
+      for (int i = 0; i < D; ++i) n2 += v[i] * v[i];
+      batch_[n] = v;
+      tries_[n] = ++tries;
+      n += static_cast<std::size_t>((n2 >= r * r) & (n2 <= 4.0 * r * r));
+    }
+    next_ = 0;
+    count_ = n;
+  }
+
+  static constexpr std::size_t kBatch = 8;
+  Rng ahead_{0}, batch_start_{0};
+  double r_ = 0;
+  std::size_t next_ = 0, count_ = 0, taken_ = 0;
+  std::array<Point<D>, kBatch> batch_;
+  std::array<unsigned, kBatch> tries_{};  // draws of D numbers up to each offset, from the batch's start
+};
 
 void refuse_count(const char* method, const std::optional<std::uint64_t>& count) {
   if (count)
@@ -164,25 +301,33 @@ PointSet<D> bridson(const BridsonParams& params, const SamplingConstraints<D>& c
   refuse_count("bridson", params.count);
   ConstrainedSet<D> set("bridson", params.radius, constraints, domain);
   Rng rng(seed);
-  std::vector<std::size_t> active(set.size());
-  for (std::size_t i = 0; i < active.size(); ++i) active[i] = i;
+  // The active samples with their radii (not indices: one memory access less
+  // a pick).
+  struct Active {
+    Point<D> p;
+    double r;
+  };
+  std::vector<Active> active(set.size());
+  ShellOffsets<D> offsets;
+  for (std::size_t i = 0; i < active.size(); ++i) active[i] = {set.point(i), set.radius(i)};
   for (;;) {
     while (!active.empty()) {
       const std::size_t slot = static_cast<std::size_t>(rng.uniform() * static_cast<double>(active.size()));
-      const std::size_t from = active[slot];
-      const Point<D> centre = set.point(from);
-      const double r = set.radius(from);
+      const Point<D> centre = active[slot].p;
+      const double r = active[slot].r;
+      offsets.start(rng, r);
       bool placed = false;
       for (int t = 0; t < params.k && !placed; ++t) {
-        const Point<D> v = shell_offset<D>(rng, r);
+        const Point<D>& v = offsets.take();
         Point<D> c;
         for (int i = 0; i < D; ++i) c[i] = centre[i] + v[i];
         c = domain.wrap(c);
         if (!domain.contains(c)) continue;
         placed = set.try_add(c);
       }
+      offsets.finish(rng);
       if (placed) {
-        active.push_back(set.size() - 1);
+        active.push_back({set.point(set.size() - 1), set.radius(set.size() - 1)});
       } else {
         active[slot] = active.back();
         active.pop_back();
@@ -190,9 +335,10 @@ PointSet<D> bridson(const BridsonParams& params, const SamplingConstraints<D>& c
     }
     // The front is spent: look for space it never reached.
     std::uint64_t misses = 0;
-    while (misses < kConstrainedRestartDarts && !set.try_add(uniform_point(rng, domain))) ++misses;
+    set.start_darts(rng);
+    while (misses < kConstrainedRestartDarts && !set.try_add_dart(rng)) ++misses;
     if (misses == kConstrainedRestartDarts) break;
-    active.push_back(set.size() - 1);
+    active.push_back({set.point(set.size() - 1), set.radius(set.size() - 1)});
   }
   return set.take();
 }
@@ -211,12 +357,13 @@ PointSet<D> dart_throwing(const DartThrowingParams& params, const SamplingConstr
   const double expected =
       params.count ? static_cast<double>(wanted) : typical_count(sizing_volume(domain, set.rmin()), set.rmin(), D);
   ProgressReporter progress(params.progress, expected);
+  set.start_darts(rng);
   while (set.generated() < wanted) {
     const auto placed = static_cast<double>(set.generated());
     progress.update(params.count ? placed
                                  : expected * std::max(placed / expected,
                                                        static_cast<double>(failures) / static_cast<double>(bound)));
-    if (set.try_add(uniform_point(rng, domain))) {
+    if (set.try_add_dart(rng)) {
       failures = 0;
     } else if (++failures >= bound) {
       if (!params.count) break;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 
+#include "flat_levels.h"
 #include "pds/error.h"
 #include "pds/polygon.h"
 #include "pds/registry.h"
@@ -100,22 +101,38 @@ TEST(Constrained, PairRuleHoldsAcrossAStepAndIn3D) {
     }
 }
 
+bool brute_force_conflict(const auto& domain, const auto& stored, const std::vector<double>& radii, const auto& x,
+                          double r) {
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    const double m = std::max(r, radii[i]);
+    if (domain.distance2(x, stored[i]) < m * m) return true;
+  }
+  return false;
+}
+
 // Stores `stored` points with radii log-uniform over [rmin, rmax]
-// (conflicting among themselves too), then asks about `queries` others with
-// radii drawn the same way: the index must agree with brute force. Returns
-// how many queries conflict.
-template <int D>
+// (conflicting among themselves too, unless `keep_rule`: then a point is
+// stored only where brute force finds it free, as the samplers store them),
+// then asks about `queries` others with radii drawn the same way: the index
+// must agree with brute force, and where it has a cover (flat_levels.h), a
+// point it calls covered must conflict whatever its radius (brute force
+// with the smallest, rmin). Returns how many queries conflict; `covered`
+// receives how many the cover decided.
+template <class Index, int D>
 int expect_index_matches_brute_force(const Domain<D>& domain, double rmin, double rmax, int stored_count, int queries,
-                                     int expected_levels) {
-  detail::RadiusLevels<D> index(domain, rmin, rmax);
+                                     int expected_levels, bool keep_rule = false, int* covered = nullptr) {
+  Index index(domain, rmin, rmax);
   EXPECT_EQ(index.levels(), expected_levels);
   Rng rng(17);
   PointSet<D> stored;
   std::vector<double> radii;
   const auto radius = [&] { return rmin * std::pow(rmax / rmin, rng.uniform()); };
   for (int i = 0; i < stored_count; ++i) {
-    stored.push_back(uniform_point(rng, domain));
-    radii.push_back(radius());
+    const Point<D> x = uniform_point(rng, domain);
+    const double r = radius();
+    if (keep_rule && brute_force_conflict(domain, stored, radii, x, r)) continue;
+    stored.push_back(x);
+    radii.push_back(r);
     index.insert(stored.back(), radii.back());
   }
   int conflicts = 0;
@@ -130,6 +147,12 @@ int expect_index_matches_brute_force(const Domain<D>& domain, double rmin, doubl
     EXPECT_EQ(index.conflicts(x, r), brute) << x << " r " << r;
     if (index.conflicts(x, r) != brute) break;
     conflicts += brute;
+    if constexpr (requires { index.covered(index.spot(x)); }) {
+      if (index.covered(index.spot(x))) {
+        EXPECT_TRUE(brute_force_conflict(domain, stored, radii, x, rmin)) << x << " covered";
+        if (covered) ++*covered;
+      }
+    }
   }
   return conflicts;
 }
@@ -159,19 +182,53 @@ TEST(Constrained, PairRuleHoldsIn1DAnd5D) {
 TEST(Constrained, LevelIndexFindsEveryConflict) {
   for (bool torus : {false, true}) {
     // A ratio of 60 in steps of sqrt(2): 12 levels.
-    const int conflicts =
-        expect_index_matches_brute_force(Domain<2>{{-1, 0}, {0.5, 1}, torus}, 0.002, 0.12, 150, 3000, 12);
+    const int conflicts = expect_index_matches_brute_force<detail::RadiusLevels<2>>(Domain<2>{{-1, 0}, {0.5, 1}, torus},
+                                                                                    0.002, 0.12, 150, 3000, 12);
     EXPECT_GT(conflicts, 300);  // both answers are exercised
     EXPECT_LT(conflicts, 2700);
   }
-  expect_index_matches_brute_force(Domain<3>::unit(true), 0.01, 0.2, 300, 2000, 9);
+  expect_index_matches_brute_force<detail::RadiusLevels<3>>(Domain<3>::unit(true), 0.01, 0.2, 300, 2000, 9);
 }
 
 TEST(Constrained, LevelIndexBeyondItsLastLevel) {
   // A ratio of 10^6 in 1D: more than the 32 levels cover, so the last level
   // holds radii from about 46,000 rmin to rmax; still exact.
-  const int conflicts = expect_index_matches_brute_force(Domain<1>::unit(true), 1e-6, 1.0, 200, 2000, 32);
+  const int conflicts =
+      expect_index_matches_brute_force<detail::RadiusLevels<1>>(Domain<1>::unit(true), 1e-6, 1.0, 200, 2000, 32);
   EXPECT_GT(conflicts, 200);
+}
+
+// The flat index of 1 to 3 dimensions (flat_levels.h) against brute force:
+// points stored as the samplers store them (the rule kept: one a cell, the
+// list scan and the other levels' bits decide) and in any way (fixed points:
+// cells shared, the overflow index decides too); a box and a torus whose
+// bounds hold the origin (where an empty cell's zeros lie), axes a few cells
+// long (the margin wraps several times; 7 cells at the coarsest level), a
+// constant radius, and more levels than the 32 bits hold. Its cover is
+// checked on the way (every covered point conflicts), and must decide many.
+TEST(Constrained, FlatIndexFindsEveryConflict) {
+  using Flat2 = detail::FlatLevels<2>;
+  for (bool torus : {false, true}) {
+    const Domain<2> wide{{-1, -0.3}, {0.5, 1}, torus};
+    for (bool keep_rule : {false, true}) {
+      // 13 levels: in 2D a level spans just under sqrt(2) (2 cell edges).
+      int covered = 0;
+      const int conflicts = expect_index_matches_brute_force<Flat2>(wide, 0.002, 0.12, keep_rule ? 3000 : 150, 3000, 13,
+                                                                    keep_rule, &covered);
+      EXPECT_GT(conflicts, 300);
+      EXPECT_LT(conflicts, 2900);
+      EXPECT_GT(covered, conflicts / 3);
+    }
+    const Domain<2> narrow{{0, 0}, {1, 0.02}, torus};
+    EXPECT_GT(expect_index_matches_brute_force<Flat2>(narrow, 0.0005, 0.006, 2000, 3000, 8, true), 300);
+    EXPECT_GT(expect_index_matches_brute_force<Flat2>(wide, 0.01, 0.01, 3000, 3000, 1, true), 300);
+    EXPECT_GT(expect_index_matches_brute_force<detail::FlatLevels<3>>(Domain<3>{{-0.5, 0, 0}, {0.5, 1, 1}, torus}, 0.01,
+                                                                      0.2, 3000, 2000, 9, true),
+              200);
+    EXPECT_GT(expect_index_matches_brute_force<detail::FlatLevels<1>>(Domain<1>{{-0.5}, {0.5}, torus}, 1e-6, 1.0, 2000,
+                                                                      2000, 32, true),
+              200);
+  }
 }
 
 // Counts in vertical strips follow the integral of 1/r^2 over the strip:

@@ -1,7 +1,9 @@
 #pragma once
-// The neighbour index of the variable-radius samplers (constrained.cpp): is
-// a new point at x with radius r in conflict with a stored one, under the
-// rule distance < max(r, r_q) (samplers/constraints.h)?
+// The neighbour index of the variable-radius samplers (constrained.cpp) from
+// 4 dimensions on, and the overflow of flat_levels.h (the 1 to 3 dimensional
+// index, which answers the same): is a new point at x with radius r in
+// conflict with a stored one, under the rule distance < max(r, r_q)
+// (samplers/constraints.h)?
 //
 // One grid over [rmin, rmax] would cost in proportion to (rmax/rmin)^D cells
 // a query (cells sized by rmin, a search out to rmax). Instead points are
@@ -88,6 +90,13 @@ class RadiusLevels {
         return true;
       });
     }
+  }
+
+  /// conflicts() then, if none, insert(); returns whether x was stored.
+  bool insert_if_free(const Point<D>& x, double r) {
+    if (conflicts(x, r)) return false;
+    insert(x, r);
+    return true;
   }
 
   int levels() const { return static_cast<int>(levels_.size()); }
