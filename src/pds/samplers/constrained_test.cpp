@@ -444,5 +444,33 @@ TEST(Constrained, DartThrowingReportsProgressAndStops) {
   EXPECT_THROW(dart_throwing(params, c, domain, 1), Cancelled);
 }
 
+// Bridson under a field and a mask: monotone reports ending at the total,
+// many of them, not stuck near 0 or at the total for most of the run (the
+// total estimates the room the mask and the field leave), the same bytes.
+TEST(Constrained, BridsonReportsProgressAndStops) {
+  auto c = radial_field(0.005, 0.05);
+  c.inside = [](const Point<2>& x) { return x[0] + x[1] < 1.5; };
+  BridsonParams params;
+  std::vector<double> reports;
+  double total = 0;
+  params.progress.report = [&](double done, double of) {
+    if (!reports.empty()) EXPECT_GE(done, reports.back());
+    reports.push_back(done);
+    total = of;
+    return true;
+  };
+  const Domain<2> domain = Domain<2>::unit(false);
+  const PointSet<2> points = bridson(params, c, domain, 1);
+  ASSERT_GE(reports.size(), 10u);
+  EXPECT_EQ(reports.back(), total);
+  // The last report before the finish is a fair part of the total: the
+  // estimate is within a factor 2 of the count.
+  EXPECT_GT(static_cast<double>(points.size()), 0.5 * total);
+  EXPECT_LT(static_cast<double>(points.size()), 2.0 * total);
+  EXPECT_EQ(points, bridson(BridsonParams{}, c, domain, 1));
+  params.progress.report = [](double done, double) { return done < 10; };
+  EXPECT_THROW(bridson(params, c, domain, 1), Cancelled);
+}
+
 }  // namespace
 }  // namespace pds
