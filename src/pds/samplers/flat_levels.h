@@ -58,7 +58,14 @@
 // most 128 MiB: coarser cells beyond), mapped at once; the blocks' bits 4
 // bytes a block.
 
+// Elsewhere than POSIX systems the grids come zeroed from calloc instead
+// (the same bytes out, without the lazy pages).
+#if defined(__unix__) || defined(__APPLE__)
 #include <sys/mman.h>
+#define PDS_FLAT_LEVELS_MMAP 1
+#else
+#define PDS_FLAT_LEVELS_MMAP 0
+#endif
 
 #include <algorithm>
 #include <array>
@@ -279,17 +286,30 @@ class FlatLevels {
   struct Unmap {
     std::size_t bytes = 0;
     void operator()(void* p) const {
+#if PDS_FLAT_LEVELS_MMAP
       if (p) munmap(p, bytes);
+#else
+      std::free(p);
+#endif
     }
   };
   template <class T>
-  static std::unique_ptr<T[], Unmap> zeroed(std::size_t count, bool populate = false) {
+  static std::unique_ptr<T[], Unmap> zeroed(std::size_t count, [[maybe_unused]] bool populate = false) {
     const std::size_t bytes = count * sizeof(T);
-    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | (populate ? MAP_POPULATE : 0),
-                   -1, 0);
+#if PDS_FLAT_LEVELS_MMAP
+#ifdef MAP_POPULATE
+    const int flags = MAP_PRIVATE | MAP_ANONYMOUS | (populate ? MAP_POPULATE : 0);
+#else
+    const int flags = MAP_PRIVATE | MAP_ANONYMOUS;
+#endif
+    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, flags, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
 #ifdef MADV_HUGEPAGE
     if (!populate && bytes <= kHugePagesUpTo) madvise(p, bytes, MADV_HUGEPAGE);
+#endif
+#else
+    void* p = std::calloc(count, sizeof(T));
+    if (!p) throw std::bad_alloc();
 #endif
     return std::unique_ptr<T[], Unmap>(static_cast<T*>(p), Unmap{bytes});
   }
