@@ -194,11 +194,16 @@ class CellIndex {
     const Point<D>& p = points_[self];
     const double r = reach_ * (1.0 + 1e-12) + 1e-12 * scale_;
     const double r2 = reach_ * reach_;
+    // Cell coordinates clamped beyond any grid (kMaxGridCells = 2^28 cells
+    // in all) before the cast: the reach along a thin axis can span more
+    // cells than an int holds (a 1e-150 x 1e150 box). The window then clips
+    // the axis to the box, or takes a torus's whole period, as it would.
+    constexpr double kFar = 0x1.0p29;
     std::array<int, D> first, last;
     for (int i = 0; i < D; ++i) {
       const double x = p[i] - domain_.lo[i];
-      first[i] = static_cast<int>(std::floor((x - r) * inv_edge_[i]));
-      last[i] = static_cast<int>(std::floor((x + r) * inv_edge_[i]));
+      first[i] = static_cast<int>(std::clamp(std::floor((x - r) * inv_edge_[i]), -kFar, kFar));
+      last[i] = static_cast<int>(std::clamp(std::floor((x + r) * inv_edge_[i]), -kFar, kFar));
     }
     std::size_t n = 0;
     const auto window = hood_.window(first, last);

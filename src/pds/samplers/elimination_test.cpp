@@ -128,6 +128,19 @@ TEST(Elimination, SweepsRemoveWhatTheHeapRemovesInItsOrder) {
   }
 }
 
+// A reach of more cells than an int holds along a thin axis: the window
+// takes the whole axis (it was undefined behaviour, found by review).
+TEST(Elimination, ExtremeAspectRatios) {
+  for (bool torus : {false, true}) {
+    const Domain<2> domain{{0, 0}, {1e-150, 1e150}, torus};
+    for (std::uint64_t n : {1u, 3u, 50u}) {
+      const PointSet<2> points = elimination<2>({.count = n}, domain, 1);
+      ASSERT_EQ(points.size(), n);
+      for (const auto& p : points) EXPECT_TRUE(domain.contains(p)) << p;
+    }
+  }
+}
+
 TEST(Elimination, ExactCountInsideAndSameSeedSameBytes) {
   for (std::uint64_t n : {1u, 2u, 3u, 17u, 1000u})
     for (bool torus : {false, true}) {
