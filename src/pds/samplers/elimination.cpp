@@ -184,7 +184,6 @@ class CellIndex {
     original_.resize(to);
   }
 
-  const Point<D>& point(std::uint32_t k) const { return points_[k]; }
   std::uint32_t original(std::uint32_t k) const { return original_[k]; }
 
   /// Writes to out[0, n) every point k other than `self` closer than the
@@ -276,8 +275,6 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 // decrease-key. Larger weight first; equal weights, smaller index first.
 class WeightHeap {
  public:
-  static constexpr std::uint32_t kOut = std::numeric_limits<std::uint32_t>::max();
-
   explicit WeightHeap(const std::vector<Weight>& weights) : heap_(weights.size()), position_(weights.size()) {
     for (std::size_t k = 0; k < weights.size(); ++k) {
       heap_[k] = {weights[k], static_cast<std::uint32_t>(k)};
@@ -286,12 +283,9 @@ class WeightHeap {
     for (std::size_t at = heap_.size() / 2; at-- > 0;) sift_down(at);
   }
 
-  bool contains(std::uint32_t k) const { return position_[k] != kOut; }
-
   /// The top entry, removed.
   std::pair<Weight, std::uint32_t> pop() {
     const Entry top = heap_[0];
-    position_[top.index] = kOut;
     heap_[0] = heap_.back();
     heap_.pop_back();
     if (!heap_.empty()) {
