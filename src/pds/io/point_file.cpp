@@ -208,8 +208,11 @@ PointCloud read_npy(std::istream& in, const std::string& name) {
   std::vector<std::uint64_t> dims;
   {
     const std::regex number("[0-9]+");
-    for (auto it = std::sregex_iterator(shape.begin(), shape.end(), number); it != std::sregex_iterator(); ++it)
+    for (auto it = std::sregex_iterator(shape.begin(), shape.end(), number); it != std::sregex_iterator(); ++it) {
+      // More digits than 64 bits hold (stoull would throw out_of_range): too large.
+      if (it->str().size() > 19) bad_file(name, "NPY shape " + shape + " is too large");
       dims.push_back(std::stoull(it->str()));
+    }
   }
   if (dims.size() != 2) bad_file(name, "NPY shape " + shape + " is not (N, D)");
   const std::uint64_t n = dims[0];

@@ -165,6 +165,10 @@ TEST_F(PointFiles, MalformedNpyIsRejected) {
   expect_error(path("int.npy"), "dtype '<i8' is not supported");
   write_text("huge.npy", npy_preamble("{'descr': '<f8', 'fortran_order': False, 'shape': (999999999999, 2), }"));
   expect_error(path("huge.npy"), "is too large");
+  // More digits than 64 bits hold (found by the read_npy fuzz target: stoull threw out_of_range).
+  write_text("overflow.npy",
+             npy_preamble("{'descr': '<f8', 'fortran_order': False, 'shape': (3333333333333333333333333333334, 2), }"));
+  expect_error(path("overflow.npy"), "is too large");
   // A plausible shape with no data behind it is caught before allocating.
   write_text("empty.npy", npy_preamble("{'descr': '<f8', 'fortran_order': False, 'shape': (100000000, 3), }"));
   expect_error(path("empty.npy"), "truncated NPY data");
