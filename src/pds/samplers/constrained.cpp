@@ -10,17 +10,19 @@
 // mask, then no conflict under the pair rule of samplers/constraints.h,
 // found by the radius-level index (flat_levels.h in 1 to 3 dimensions,
 // radius_levels.h from 4). Bridson's loop proposes candidates around active
-// samples; dart throwing proposes uniform darts. Both run on one random
-// stream from the seed. The mask and the field are read only where the
-// cover does not decide (the pair rule does not need r(x) there).
+// samples; dart throwing proposes uniform darts. The mask and the field are
+// read only where the cover does not decide (the pair rule does not need
+// r(x) there).
 //
-// Speed without changing a number drawn: Bridson's shell offsets are drawn
-// ahead in batches from a copy of the stream (the same numbers and tests as
-// one by one, a rejected draw overwritten instead of a mispredicted branch;
-// the stream is then advanced to where the offsets taken leave it), and
-// where the cover outgrows the caches near the core, the darts are drawn
-// ahead from a copy with their words of the cover fetched early. The output
-// is the same bytes as the plain loop's.
+// Random numbers: Bridson's shell offsets are the uniform loop's
+// (annulus_offsets.h: per-axis streams split from the seed, drawn ahead in
+// branch-free batches) at radius 1, scaled by the picked sample's radius;
+// the picks and the darts come from the seed's own stream. Speed: where the
+// cover outgrows the caches near the core, a picked sample's rows of the
+// cover are fetched early and darts are drawn ahead from a copy of the
+// stream with their words of the cover fetched early; restart darts are
+// aimed at the cells the cover leaves open once it holds most of the domain
+// (ConstrainedSet::restart: the law of uniform darts, fewer numbers).
 //
 // Guarantees: see samplers/constrained.h. The pair rule is decided as
 // d2 < max(r_a, r_b)^2 with d2 from Domain::distance2, the arithmetic the
@@ -50,6 +52,7 @@
 #include <string>
 #include <type_traits>
 
+#include "annulus_offsets.h"
 #include "flat_levels.h"
 #include "pds/detail/format.h"
 #include "pds/detail/instantiate.h"
@@ -86,6 +89,7 @@ class LinkedLevels {
   bool covered(const Spot&) const { return false; }
   std::size_t cover_bytes() const { return 0; }
   void prefetch(const Spot&) const {}
+  void prefetch_cover(const Point<D>&, double) const {}
   bool insert_if_free(const Query& q) { return index_.insert_if_free(q.x, q.r); }
   void insert(const Point<D>& x, double r) { index_.insert(x, r); }
 
@@ -180,14 +184,65 @@ class ConstrainedSet {
     next_dart_ = 0;
   }
 
-  bool try_add_dart(Rng& rng) {
-    if (!darts_ahead_) return try_add(uniform_point(rng, domain_));
-    Dart& dart = darts_[next_dart_];
-    next_dart_ = (next_dart_ + 1) % kDartsAhead;
-    for (int i = 0; i < D; ++i) rng.next();  // the draws of the dart's D coordinates
-    const bool added = try_add(dart.x, dart.spot);
-    draw_ahead(dart);
-    return added;
+  bool try_add_dart(Rng& rng) { return throw_dart(rng) == Landing::added; }
+
+  /// Darts uniform over the domain from rng until one adds a sample (true)
+  /// or `bound` miss in a row (false): in law what calling try_add_dart()
+  /// until then does. Once the cover holds most of the domain (at most one
+  /// dart in kAimShare of a window of kAimWindow landed outside it), darts
+  /// are aimed: the cells not covered then are listed, and the darts that
+  /// would land in covered cells (certain misses) are only counted, their
+  /// number between two aimed darts drawn from its geometric law (a dart
+  /// lands in a listed cell with probability listed / all cells); an aimed
+  /// dart is uniform in a listed cell chosen uniformly, a miss when the
+  /// cell has since been covered (it then leaves the list). Cells outside
+  /// the list stay covered (bits are only set), so the law is the plain
+  /// darts'; the numbers drawn are not. A restart after Bridson's front
+  /// dies throws hundreds of thousands of darts, mostly into covered cells.
+  bool restart(Rng& rng, std::uint64_t bound) {
+    std::uint64_t misses = 0;
+    if (!aimed_) {
+      start_darts(rng);
+      std::uint64_t window = 0, open = 0;
+      for (;;) {
+        if (misses == bound) return false;
+        const Landing landing = throw_dart(rng);
+        if (landing == Landing::added) return true;
+        ++misses;
+        open += landing != Landing::covered;
+        if (++window < kAimWindow) continue;
+        if (kAimable && open * kAimShare <= kAimWindow) break;
+        window = open = 0;
+      }
+      aim();
+    }
+    if constexpr (kAimable) {
+      const auto cells = static_cast<double>(index_.cover_cells());
+      while (misses < bound) {
+        if (uncovered_.empty()) return false;  // every dart would land in a covered cell
+        const double p = static_cast<double>(uncovered_.size()) / cells;
+        if (p < 1.0) {
+          const double skipped = std::floor(std::log(1.0 - rng.uniform()) / std::log1p(-p));
+          if (!(skipped < static_cast<double>(bound - misses))) return false;
+          misses += static_cast<std::uint64_t>(skipped);
+        }
+        const std::size_t j = rng.below(uncovered_.size());
+        const std::uint32_t cell = uncovered_[j];
+        if (index_.covered(index_.cover_spot(cell))) {
+          uncovered_[j] = uncovered_.back();
+          uncovered_.pop_back();
+        } else if (try_add_uncovered(index_.uniform_in_cover_cell(cell, rng))) {
+          return true;
+        }
+        ++misses;
+      }
+    }
+    return false;
+  }
+
+  /// Asks for the cover around a picked sample (2D covers beyond the caches).
+  void prefetch_around(const Point<D>& x, double reach) const {
+    if (darts_ahead_) index_.prefetch_cover(x, reach);
   }
 
   std::size_t size() const { return points_.size(); }
@@ -217,6 +272,39 @@ class ConstrainedSet {
     radii_.push_back(r);
   }
 
+  enum class Landing { added, covered, refused };
+
+  // try_add_dart(), saying whether the dart fell in the cover.
+  Landing throw_dart(Rng& rng) {
+    Point<D> x;
+    typename Index::Spot spot;
+    if (!darts_ahead_) {
+      x = uniform_point(rng, domain_);
+      spot = index_.spot(x);
+    } else {
+      Dart& dart = darts_[next_dart_];
+      next_dart_ = (next_dart_ + 1) % kDartsAhead;
+      for (int i = 0; i < D; ++i) rng.next();  // the draws of the dart's D coordinates
+      x = dart.x;
+      spot = dart.spot;
+      draw_ahead(dart);
+    }
+    if (index_.covered(spot)) return Landing::covered;
+    return try_add_uncovered(x) ? Landing::added : Landing::refused;
+  }
+
+  // Lists the cells the cover leaves open, once: restart() aims at them from then on.
+  void aim() {
+    aimed_ = true;
+    if constexpr (kAimable) index_.for_each_uncovered([&](std::uint32_t cell) { uncovered_.push_back(cell); });
+  }
+
+  // Aimed darts need the cover (flat levels, 1 to 3 dimensions).
+  static constexpr bool kAimable = D <= 3;
+  static constexpr std::uint64_t kAimWindow = 1024, kAimShare = 16;
+  bool aimed_ = false;
+  std::vector<std::uint32_t> uncovered_;
+
   static constexpr std::size_t kDartsAhead = 16;
   struct Dart {
     Point<D> x;
@@ -244,63 +332,6 @@ class ConstrainedSet {
   bool darts_ahead_ = index_.cover_bytes() > (std::size_t{4} << 20);
 };
 
-// Points uniform by volume in the shell [r, 2r] around the origin, by
-// rejection from the cube [-2r, 2r]^D, drawn ahead in batches from a copy of
-// the stream: the same numbers and the same tests as drawing them one by one
-// (so the same samples), but a rejected draw is overwritten by the next
-// instead of taking a branch that is mispredicted about every other draw
-// (41% are rejected in 2D). finish() leaves the stream where drawing the
-// offsets taken one by one would have left it.
-template <int D>
-class ShellOffsets {
- public:
-  /// Offsets of radius r from rng's current state on.
-  void start(const Rng& rng, double r) {
-    ahead_ = rng;
-    r_ = r;
-    next_ = count_ = 0;
-  }
-
-  [[gnu::always_inline]] const Point<D>& take() {
-    if (next_ == count_) refill();
-    taken_ = next_;
-    return batch_[next_++];
-  }
-
-  /// The stream after the last offset taken (at least one): from the
-  /// batch's start, as many draws as were made up to that offset.
-  void finish(Rng& rng) const {
-    rng = batch_start_;
-    for (unsigned j = 0; j < tries_[taken_] * D; ++j) rng.next();
-  }
-
- private:
-  void refill() {
-    const double r = r_;
-    batch_start_ = ahead_;
-    std::size_t n = 0;
-    unsigned tries = 0;
-    while (n < kBatch) {
-      Point<D> v;
-      for (int i = 0; i < D; ++i) v[i] = ahead_.uniform(-2.0 * r, 2.0 * r);
-      double n2 = 0.0;
-      for (int i = 0; i < D; ++i) n2 += v[i] * v[i];
-      batch_[n] = v;
-      tries_[n] = ++tries;
-      n += static_cast<std::size_t>((n2 >= r * r) & (n2 <= 4.0 * r * r));
-    }
-    next_ = 0;
-    count_ = n;
-  }
-
-  static constexpr std::size_t kBatch = 8;
-  Rng ahead_{0}, batch_start_{0};
-  double r_ = 0;
-  std::size_t next_ = 0, count_ = 0, taken_ = 0;
-  std::array<Point<D>, kBatch> batch_;
-  std::array<unsigned, kBatch> tries_{};  // draws of D numbers up to each offset, from the batch's start
-};
-
 void refuse_count(const char* method, const std::optional<std::uint64_t>& count) {
   if (count)
     throw InvalidArgument(
@@ -324,28 +355,30 @@ PointSet<D> bridson(const BridsonParams& params, const SamplingConstraints<D>& c
     double r;
   };
   std::vector<Active> active(set.size());
-  ShellOffsets<D> offsets;
   for (std::size_t i = 0; i < active.size(); ++i) active[i] = {set.point(i), set.radius(i)};
+  // The uniform loop's offsets at radius 1, scaled by the picked sample's
+  // radius: uniform by volume in its shell [r, 2r] (up to the rounding of
+  // the product, which the exact test of the candidate makes harmless).
+  detail::AnnulusOffsets<D, 53> offsets(1.0, false, seed);
   // Progress: samples placed against the usual count of the room left
   // (estimated only when someone listens), every kReportEvery samples.
   constexpr std::size_t kReportEvery = 256;
   ProgressReporter progress(params.progress, params.progress ? set.typical_generated() : 1.0);
   for (;;) {
     while (!active.empty()) {
-      const std::size_t slot = static_cast<std::size_t>(rng.uniform() * static_cast<double>(active.size()));
+      const std::size_t slot = rng.below(active.size());
       const Point<D> centre = active[slot].p;
       const double r = active[slot].r;
-      offsets.start(rng, r);
+      set.prefetch_around(centre, 2.0 * r);
       bool placed = false;
       for (int t = 0; t < params.k && !placed; ++t) {
-        const Point<D>& v = offsets.take();
+        const Point<D>& v = offsets.next();
         Point<D> c;
-        for (int i = 0; i < D; ++i) c[i] = centre[i] + v[i];
+        for (int i = 0; i < D; ++i) c[i] = centre[i] + r * v[i];
         c = domain.wrap(c);
         if (!domain.contains(c)) continue;
         placed = set.try_add(c);
       }
-      offsets.finish(rng);
       if (placed) {
         active.push_back({set.point(set.size() - 1), set.radius(set.size() - 1)});
         if (set.generated() % kReportEvery == 0) progress.update(static_cast<double>(set.generated()));
@@ -355,10 +388,7 @@ PointSet<D> bridson(const BridsonParams& params, const SamplingConstraints<D>& c
       }
     }
     // The front is spent: look for space it never reached.
-    std::uint64_t misses = 0;
-    set.start_darts(rng);
-    while (misses < kConstrainedRestartDarts && !set.try_add_dart(rng)) ++misses;
-    if (misses == kConstrainedRestartDarts) break;
+    if (!set.restart(rng, kConstrainedRestartDarts)) break;
     active.push_back({set.point(set.size() - 1), set.radius(set.size() - 1)});
     progress.update(static_cast<double>(set.generated()));
   }

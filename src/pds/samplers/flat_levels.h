@@ -85,6 +85,7 @@
 #include "pds/grid.h"
 #include "pds/grid_neighbourhood.h"
 #include "pds/point.h"
+#include "pds/rng.h"
 #include "radius_levels.h"
 
 namespace pds::detail {
@@ -243,6 +244,80 @@ class FlatLevels {
 
   /// Asks for the cover's word of a spot (a dart, drawn ahead).
   void prefetch(const Spot& s) const { __builtin_prefetch(&cover_[s.word]); }
+
+  /// Asks for the cover's words within `reach` of x (2D: the words of x's
+  /// column on each row within reach; a picked sample's candidates land
+  /// there, and on a large cover each would otherwise wait for its own cache
+  /// miss).
+  void prefetch_cover(const Point<D>& x, double reach) const {
+    if constexpr (D == 2) {
+      const double u = x[0] - domain_.lo[0], v = x[1] - domain_.lo[1];
+      const int c0 = std::min(static_cast<int>(u * cover_inv_edge_[0]), cover_cells_[0] - 1);
+      const std::size_t word = static_cast<std::size_t>(c0 >> 6);
+      int a = floor_int((v - reach) * cover_inv_edge_[1]), b = floor_int((v + reach) * cover_inv_edge_[1]);
+      const int n = cover_cells_[1];
+      if (b - a >= n) {
+        a = 0;
+        b = n - 1;
+      }
+      for (int row = a; row <= b; ++row) {
+        int r = row;
+        if (r < 0) r += n;
+        if (r >= n) r -= n;
+        if (r < 0 || r >= n) continue;
+        __builtin_prefetch(&cover_[static_cast<std::size_t>(r) * cover_words_ + word]);
+      }
+    }
+  }
+
+  // The cover's cells by number, for restart darts aimed at the uncovered
+  // ones (constrained.cpp): cell = row x (cells along axis 0) + column, rows
+  // numbered axis 1 fastest. All of them fit 32 bits (kMaxCoverBits).
+
+  /// How many cells the cover has (equal volumes tiling the domain).
+  std::uint64_t cover_cells() const {
+    std::uint64_t n = 1;
+    for (int i = 0; i < D; ++i) n *= static_cast<std::uint64_t>(cover_cells_[i]);
+    return n;
+  }
+
+  /// Calls f(cell) for every cell of the cover not yet covered, in order.
+  template <class F>
+  void for_each_uncovered(F&& f) const {
+    const auto columns = static_cast<std::uint64_t>(cover_cells_[0]);
+    const std::uint64_t rows = cover_cells() / columns;
+    for (std::uint64_t row = 0; row < rows; ++row)
+      for (std::size_t w = 0; w < cover_words_; ++w) {
+        const std::uint64_t base = w * 64;
+        // Bits past the row's last column are not cells.
+        std::uint64_t free = ~cover_[row * cover_words_ + w];
+        if (columns - base < 64) free &= (std::uint64_t{1} << (columns - base)) - 1;
+        for (; free; free &= free - 1)
+          f(static_cast<std::uint32_t>(row * columns + base + static_cast<unsigned>(std::countr_zero(free))));
+      }
+  }
+
+  /// The spot of a cover cell.
+  Spot cover_spot(std::uint32_t cell) const {
+    const auto columns = static_cast<std::uint32_t>(cover_cells_[0]);
+    const std::uint32_t column = cell % columns;
+    return {(cell / columns) * cover_words_ + (column >> 6), std::uint64_t{1} << (column & 63)};
+  }
+
+  /// A point uniform in a cover cell (up to the rounding of the cell
+  /// arithmetic, which may put it in a neighbouring cell), in the domain.
+  Point<D> uniform_in_cover_cell(std::uint32_t cell, Rng& rng) const {
+    Point<D> x;
+    std::uint32_t rest = cell;
+    for (int i = 0; i < D; ++i) {
+      const auto n = static_cast<std::uint32_t>(cover_cells_[i]);
+      const std::uint32_t c = rest % n;
+      rest /= n;
+      const double v = domain_.lo[i] + (static_cast<double>(c) + rng.uniform()) * cover_edge_[i];
+      x[i] = std::clamp(v, domain_.lo[i], std::nextafter(domain_.hi[i], domain_.lo[i]));
+    }
+    return x;
+  }
 
   /// conflicts() then, if none, insert(); returns whether x was stored.
   [[gnu::always_inline]] bool insert_if_free(const Query& q) {
