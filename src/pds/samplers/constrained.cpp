@@ -58,6 +58,7 @@
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/limits.h"
+#include "pds/portable_math.h"
 #include "pds/progress.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
@@ -222,7 +223,8 @@ class ConstrainedSet {
         if (uncovered_.empty()) return false;  // every dart would land in a covered cell
         const double p = static_cast<double>(uncovered_.size()) / cells;
         if (p < 1.0) {
-          const double skipped = std::floor(std::log(1.0 - rng.uniform()) / std::log1p(-p));
+          // Geometric, by inversion with the portable logarithm (the same bits everywhere).
+          const double skipped = std::floor(neg_log(1.0 - rng.uniform()) / neg_log(1.0 - p));
           if (!(skipped < static_cast<double>(bound - misses))) return false;
           misses += static_cast<std::uint64_t>(skipped);
         }
