@@ -51,6 +51,18 @@ TEST(PortableMath, ExpNegWithinTheStatedUlpOfLibm) {
   EXPECT_EQ(exp_neg(0.0), 1.0);
 }
 
+TEST(PortableMath, ErfWithinFourQuadrillionthsOfLibm) {
+  double worst = 0.0;
+  for (int i = -20000; i <= 20000; ++i) {
+    const double x = i * 0.0004 + 1e-7 * (i % 7);  // -8 to 8, off the grid of round numbers
+    worst = std::max(worst, std::abs(portable_erf(x) - std::erf(x)));
+  }
+  EXPECT_LT(worst, 4e-15);
+  EXPECT_EQ(portable_erf(0.0), 0.0);
+  EXPECT_EQ(portable_erf(-1.5), -portable_erf(1.5));
+  EXPECT_NEAR(portable_erf(2.0), 0.99532226501895273, 1e-15);
+}
+
 TEST(PortableMath, UniformsFromBits) {
   EXPECT_EQ(uniform_from_bits(0), 0.0);
   EXPECT_LT(uniform_from_bits(~std::uint64_t{0}), 1.0);

@@ -24,6 +24,7 @@ const Method& dunbar_humphreys_method();
 const Method& wei_method();
 const Method& ebeida_method();
 const Method& maximal_darts_method();
+const Method& gbn_method();
 #ifdef PDS_WITH_CGAL
 const Method& jones_method();
 const Method& fpo_method();

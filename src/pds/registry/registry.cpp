@@ -37,6 +37,7 @@ std::span<const Method> methods() {
 #ifdef PDS_WITH_CGAL
       fpo_method(),
 #endif
+      gbn_method(),
   };
   return table;
 }
