@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 
 namespace pds {
 namespace {
@@ -61,6 +62,18 @@ TEST(PortableMath, ErfWithinFourQuadrillionthsOfLibm) {
   EXPECT_EQ(portable_erf(0.0), 0.0);
   EXPECT_EQ(portable_erf(-1.5), -portable_erf(1.5));
   EXPECT_NEAR(portable_erf(2.0), 0.99532226501895273, 1e-15);
+}
+
+TEST(PortableMath, ExpNegTableWithinFourUlpOfLibm) {
+  double worst = 0.0;
+  for (int i = 0; i <= 699000; ++i) {
+    const double x = i * 0.001 + 1e-7 * (i % 11);
+    const double want = std::exp(-x), got = exp_neg_table(x);
+    worst = std::max(worst, std::abs(got - want) / (want * std::numeric_limits<double>::epsilon()));
+  }
+  EXPECT_LT(worst, 4.0);
+  EXPECT_EQ(exp_neg_table(0.0), 1.0);
+  EXPECT_EQ(exp_neg_table(1000.0), 0.0);
 }
 
 TEST(PortableMath, UniformsFromBits) {

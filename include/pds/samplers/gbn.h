@@ -33,7 +33,7 @@ struct GbnParams {
 /// Guarantees: exactly `count` points in [lo, hi); same seed, same points,
 /// for any number of threads (every step moves all points at once from the
 /// previous positions, each sum in a fixed order, and the kernel is
-/// pds::exp_neg, the same bits on every platform). No minimum distance is
+/// pds::exp_neg_table, the same bits on every platform). No minimum distance is
 /// promised: the energy spreads points evenly but two may stay close.
 /// On a torus distances are to the nearest image and the kernel is cut off
 /// at min(kGbnCutoff sigma, half the shortest period); in a box the points

@@ -111,7 +111,7 @@ PointSet<D> gbn_optimize(PointSet<D> points, const Domain<D>& domain, const GbnP
         Point<D> move{};
         grid.for_each_within(x, reach, [&](std::int32_t j, double d2) {
           if (static_cast<std::size_t>(j) == i) return true;
-          const double w = exp_neg(d2 * inv_two_s2);
+          const double w = exp_neg_table(d2 * inv_two_s2);
           const Point<D>& y = points[static_cast<std::size_t>(j)];
           for (int k = 0; k < D; ++k) move[k] += domain.delta(y[k], x[k], k) * w;
           return true;
