@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -21,10 +22,14 @@ GenerateRequest request_for(const std::string& method) {
   GenerateRequest r;
   r.torus = true;
   r.seed = 5;
-  if (method == "fpo" || method == "best-candidate" || method == "elimination")
+  if (method == "gbn") {
+    r.count = 500;
+    r.params["iterations"] = 100;
+  } else if (method == "fpo" || method == "best-candidate" || method == "elimination") {
     r.count = method == "fpo" ? 500 : 2000;
-  else
+  } else {
     r.radius = 0.01;
+  }
   return r;
 }
 
@@ -62,8 +67,8 @@ TEST_P(ProgressOfMethod, CancellationStopsTheRun) {
 }
 
 std::vector<std::string> reporting_methods() {
-  std::vector<std::string> out = {"best-candidate", "bridson",       "dart-throwing", "elimination",
-                                  "ebeida",         "maximal-darts", "wei",           "dunbar-humphreys"};
+  std::vector<std::string> out = {"best-candidate", "bridson", "dart-throwing",    "elimination", "ebeida",
+                                  "maximal-darts",  "wei",     "dunbar-humphreys", "gbn"};
   for (const Method& m : methods())
     if (m.name == "jones" || m.name == "fpo") out.push_back(m.name);  // with the CGAL component
   return out;
@@ -76,7 +81,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, ProgressOfMethod, ::testing::ValuesIn(reportin
   return n;
 });
 
-TEST(ProgressOfAnalysis, OneUnitPerSetThenSpectrumAndPairCorrelation) {
+TEST(ProgressOfAnalysis, OneUnitPerSetThenWithinTheSpectrumAndThePairCorrelation) {
   GenerateRequest r;
   r.count = 200;
   r.torus = true;
@@ -87,20 +92,44 @@ TEST(ProgressOfAnalysis, OneUnitPerSetThenSpectrumAndPairCorrelation) {
   }
   std::vector<Report> reports;
   AnalysisOptions options;
-  options.max_frequency = 8;
+  options.max_frequency = 64;  // 65 rows of frequencies: 5 chunks, reported in batches
   options.progress.report = [&](double done, double total) {
     reports.push_back({done, total});
     return true;
   };
   const Domain<2> domain = Domain<2>::unit(true);
-  analyze<2>(sets, domain, options);
-  ASSERT_EQ(reports.size(), 8u);  // 0, sets 1-4, spectrum, pair correlation, the end
+  const AnalysisReport with = analyze<2>(sets, domain, options);
+  // One unit a set (0 to 5), then the spectrum (5 to 6) and the pair
+  // correlation (6 to 7), each with reports inside its unit.
+  ASSERT_FALSE(reports.empty());
+  int inside_spectrum = 0, inside_pcf = 0;
   for (std::size_t i = 0; i < reports.size(); ++i) {
-    EXPECT_EQ(reports[i].done, static_cast<double>(i));
     EXPECT_EQ(reports[i].total, 7.0);
+    if (i > 0) {
+      EXPECT_GE(reports[i].done, reports[i - 1].done);
+    }
+    inside_spectrum += reports[i].done > 5 && reports[i].done < 6;
+    inside_pcf += reports[i].done > 6 && reports[i].done < 7;
   }
-  options.progress.report = [](double done, double) { return done < 2; };
-  EXPECT_THROW(analyze<2>(sets, domain, options), Cancelled);
+  for (int k = 0; k <= 5; ++k)
+    EXPECT_NE(std::find_if(reports.begin(), reports.end(), [&](const Report& x) { return x.done == k; }), reports.end())
+        << k;
+  EXPECT_GE(inside_spectrum, 1);
+  EXPECT_GE(inside_pcf, 3);
+  EXPECT_EQ(reports.back().done, 7.0);
+  // The batches the spectrum runs in with a listener change nothing.
+  options.progress = {};
+  const AnalysisReport without = analyze<2>(sets, domain, options);
+  ASSERT_TRUE(with.spectrum && without.spectrum);
+  EXPECT_EQ(with.spectrum->peak_power, without.spectrum->peak_power);
+  EXPECT_EQ(with.rho_min, without.rho_min);
+  EXPECT_EQ(periodogram<2>(sets, domain, {.max_frequency = 64}).power,
+            periodogram<2>(sets, domain, {.max_frequency = 64}, {[](double, double) { return true; }}).power);
+  // Cancelled in the sets, in the spectrum and in the pair correlation.
+  for (double stop : {2.0, 5.5, 6.5}) {
+    options.progress.report = [stop](double done, double) { return done < stop; };
+    EXPECT_THROW(analyze<2>(sets, domain, options), Cancelled) << stop;
+  }
 }
 
 TEST(ProgressOfRender, BlocksInRoundsTheSameImageAndCancellation) {

@@ -31,6 +31,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -51,8 +52,10 @@ struct PairCorrelation {
 /// g(r) averaged over the sets. Each set needs at least two points and must
 /// lie in the domain. Throws InvalidArgument for bad options (r_max beyond
 /// half the shortest extent, h not positive, steps outside [1, 100000]).
+/// Optional progress: points visited over all sets, and cancellation
+/// (pds/progress.h).
 template <int D>
 PairCorrelation pair_correlation(std::span<const PointSet<D>> sets, const Domain<D>& domain,
-                                 const PairCorrelationOptions& options = {});
+                                 const PairCorrelationOptions& options = {}, const Progress& progress = {});
 
 }  // namespace pds

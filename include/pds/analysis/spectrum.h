@@ -32,6 +32,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -68,10 +69,13 @@ struct Periodogram {
 /// threads; each frequency sums its points in a fixed order, so the result does not
 /// depend on the number of threads. Cost: N M (2K+1)^D / 2 complex
 /// multiply-adds. Throws InvalidArgument for no sets, an empty set, a point
-/// outside the domain or K out of range.
+/// outside the domain or K out of range. Optional progress (chunks of
+/// frequency rows done) and cancellation (pds/progress.h): with a listener
+/// the rows run in batches of two chunks a thread, reported between them
+/// (the result is the same).
 template <int D>
 Periodogram periodogram(std::span<const PointSet<D>> sets, const Domain<D>& domain,
-                        const PeriodogramOptions& options = {});
+                        const PeriodogramOptions& options = {}, const Progress& progress = {});
 
 /// One annulus per frequency step b = 1..K (see the header comment).
 struct RadialSpectrum {

@@ -43,7 +43,7 @@ double kernel_moment(double r, double h, int dim) {
 
 template <int D>
 PairCorrelation pair_correlation(std::span<const PointSet<D>> sets, const Domain<D>& domain,
-                                 const PairCorrelationOptions& options) {
+                                 const PairCorrelationOptions& options, const Progress& progress) {
   domain.validate();
   if (sets.empty()) throw InvalidArgument("pair correlation: no point sets given");
   double total = 0;
@@ -79,6 +79,8 @@ PairCorrelation pair_correlation(std::span<const PointSet<D>> sets, const Domain
   const double reach = r_max + h;
 
   std::vector<double> sum(steps);
+  ProgressReporter reporter(progress, total);
+  double visited = 0;
   for (const PointSet<D>& set : sets) {
     std::fill(sum.begin(), sum.end(), 0.0);
     // Cells of about the mean spacing keep the search local for any reach.
@@ -88,6 +90,7 @@ PairCorrelation pair_correlation(std::span<const PointSet<D>> sets, const Domain
       grid.insert(p);
     }
     for (std::size_t i = 0; i < set.size(); ++i) {
+      if (i % 1024 == 0) reporter.update(visited + static_cast<double>(i));
       grid.for_each_within(set[i], reach, [&](std::int32_t j, double d2) {
         if (static_cast<std::size_t>(j) == i) return true;
         const double d = std::sqrt(d2);
@@ -101,17 +104,19 @@ PairCorrelation pair_correlation(std::span<const PointSet<D>> sets, const Domain
         return true;
       });
     }
+    visited += static_cast<double>(set.size());
     const double n = static_cast<double>(set.size());
     const double pairs_per_volume = n * (n - 1.0) / volume;
     for (int k = 0; k < steps; ++k) out.g[k] += sum[k] / (pairs_per_volume * norm[k]);
   }
   for (double& g : out.g) g /= static_cast<double>(sets.size());
+  reporter.finish();
   return out;
 }
 
 template PairCorrelation pair_correlation<2>(std::span<const PointSet<2>>, const Domain<2>&,
-                                             const PairCorrelationOptions&);
+                                             const PairCorrelationOptions&, const Progress&);
 template PairCorrelation pair_correlation<3>(std::span<const PointSet<3>>, const Domain<3>&,
-                                             const PairCorrelationOptions&);
+                                             const PairCorrelationOptions&, const Progress&);
 
 }  // namespace pds

@@ -171,7 +171,8 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
   const int K = options.max_frequency > 0 ? options.max_frequency : (D == 2 ? 128 : 32);
   const double work = static_cast<double>(total) * std::pow(2.0 * K + 1.0, D) / 2.0;
   if (smallest > 0 && (options.spectrum || options.max_frequency > 0 || work <= options.spectrum_work)) {
-    Periodogram p = periodogram<D>(sets, domain, {.max_frequency = K});
+    Periodogram p = periodogram<D>(sets, domain, {.max_frequency = K},
+                                   part_of(options.progress, sets.size(), sets.size() + 2));
     RadialSpectrum r = radial_average(p);
     out.spectrum = summarise(r, K);
     if (curves) {
@@ -186,7 +187,8 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
   // Pair correlation.
   progress.update(m + 1);
   if (smallest > 1) {
-    PairCorrelation g = pair_correlation<D>(sets, domain, options.pcf);
+    PairCorrelation g =
+        pair_correlation<D>(sets, domain, options.pcf, part_of(options.progress, sets.size() + 1, sets.size() + 2));
     out.pcf = summarise(g);
     if (curves) curves->pcf = std::move(g);
   }

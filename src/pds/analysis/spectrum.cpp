@@ -176,7 +176,8 @@ double Periodogram::mean_spacing() const {
 }
 
 template <int D>
-Periodogram periodogram(std::span<const PointSet<D>> sets, const Domain<D>& domain, const PeriodogramOptions& options) {
+Periodogram periodogram(std::span<const PointSet<D>> sets, const Domain<D>& domain, const PeriodogramOptions& options,
+                        const Progress& progress) {
   domain.validate();
   const int K = options.max_frequency;
   const int limit = D == 2 ? 1024 : 128;
@@ -206,12 +207,27 @@ Periodogram periodogram(std::span<const PointSet<D>> sets, const Domain<D>& doma
   // add_chunk, the last axis being k_last = r / (side^(D-2)) >= 0.
   std::vector<double> half(rows * side, 0.0);
   const std::size_t chunks = (rows + kRowsPerChunk - 1) / kRowsPerChunk;
-  parallel_for(0, chunks, 1, 0, [&](std::size_t first, std::size_t last) {
-    for (std::size_t c = first; c != last; ++c) {
-      const std::size_t begin = c * kRowsPerChunk, end = std::min(rows, begin + kRowsPerChunk);
-      add_chunk<D>(sets, domain, K, begin, end, half.data() + begin * side);
+  const auto run = [&](std::size_t from, std::size_t to) {
+    parallel_for(from, to, 1, 0, [&](std::size_t first, std::size_t last) {
+      for (std::size_t c = first; c != last; ++c) {
+        const std::size_t begin = c * kRowsPerChunk, end = std::min(rows, begin + kRowsPerChunk);
+        add_chunk<D>(sets, domain, K, begin, end, half.data() + begin * side);
+      }
+    });
+  };
+  if (!progress) {
+    run(0, chunks);
+  } else {
+    // Batches of two chunks a thread: each chunk still writes only its own
+    // rows, so the result does not change; the batches cost a wait each.
+    ProgressReporter reporter(progress, static_cast<double>(chunks));
+    const std::size_t batch = 2 * static_cast<std::size_t>(hardware_threads());
+    for (std::size_t from = 0; from < chunks; from += batch) {
+      run(from, std::min(chunks, from + batch));
+      reporter.update(static_cast<double>(std::min(chunks, from + batch)));
     }
-  });
+    reporter.finish();
+  }
 
   // Unfold into the full cube: the computed half holds the offsets of the
   // last axis K..2K; the rest is the mirror image through the origin.
@@ -230,8 +246,10 @@ Periodogram periodogram(std::span<const PointSet<D>> sets, const Domain<D>& doma
   return result;
 }
 
-template Periodogram periodogram<2>(std::span<const PointSet<2>>, const Domain<2>&, const PeriodogramOptions&);
-template Periodogram periodogram<3>(std::span<const PointSet<3>>, const Domain<3>&, const PeriodogramOptions&);
+template Periodogram periodogram<2>(std::span<const PointSet<2>>, const Domain<2>&, const PeriodogramOptions&,
+                                    const Progress&);
+template Periodogram periodogram<3>(std::span<const PointSet<3>>, const Domain<3>&, const PeriodogramOptions&,
+                                    const Progress&);
 
 RadialSpectrum radial_average(const Periodogram& p) {
   const int K = p.max_frequency;
