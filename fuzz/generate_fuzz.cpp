@@ -60,9 +60,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (name == "failures" && value > 1e5) value = 1e5;
     // fpo's sweep budget likewise (its default, 1000, is ~10x the 10 s above).
     if (name == "sweeps" && value > 100) value = 100;
+    // gbn's steps likewise (its default of 1,000 over 1,500 points in 3D
+    // took past 10 s; 20 steps at sigma 10, all pairs, stay near 2 s).
+    if (name == "iterations" && value > 20) value = 20;
     r.params[(which & 0x80) ? name + "x" : name] = value;
   }
   if (m.name == "fpo" && !r.params.count("sweeps")) r.params["sweeps"] = 100;
+  if (m.name == "gbn" && !r.params.count("iterations")) r.params["iterations"] = 20;
   // From 4D best-candidate is Mitchell's literal loop, m N^2 / 2 candidates:
   // 1,426 points in 4D took 20 s under the sanitizers (1 s without).
   if (m.name == "best-candidate" && r.dim >= 4) r.max_points = 500;
