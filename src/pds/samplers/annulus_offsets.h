@@ -3,7 +3,9 @@
 // the constrained one (constrained.cpp, at unit radius, scaled by each
 // active sample's own radius).
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <utility>

@@ -15,9 +15,10 @@
 // gradient of its integral over the box, a product of erfs: without it the
 // points' repulsion pushes the outermost ones onto the faces.
 //
-// Why this optimiser (issue 17's third): the paper shows GBN's spectra at
-// or beyond BNOT's, it runs in any dimension with the same code, and it
-// needs no triangulation; a step costs a neighbour sum a point.
+// Why GBN among the optimisers beyond farthest-point optimization
+// (capacity-constrained Voronoi tessellation, BNOT): the paper shows its
+// spectra at or beyond BNOT's, it runs in any dimension with the same code,
+// and it needs no triangulation; a step costs a neighbour sum a point.
 //
 // Guarantees: gbn.h. Complexity: a step is O(N K), K the neighbours within
 // the cutoff (about pi (5 sigma)^2 = 38 in 2D at sigma 0.7, (4/3) pi
@@ -79,12 +80,11 @@ PointSet<D> gbn_optimize(PointSet<D> points, const Domain<D>& domain, const GbnP
     if (!domain.contains(points[i]))
       throw InvalidArgument("gbn: starting point " + std::to_string(i) + " lies outside the domain");
   const std::size_t n = points.size();
-  double volume = 1.0, shortest = domain.extent(0);
-  for (int k = 0; k < D; ++k) {
-    volume *= domain.extent(k);
-    shortest = std::min(shortest, domain.extent(k));
-  }
-  const double s = params.sigma * root(volume / static_cast<double>(n), D);
+  const double volume = domain.volume();
+  double shortest = domain.extent(0);
+  for (int k = 1; k < D; ++k) shortest = std::min(shortest, domain.extent(k));
+  const double spacing = root(volume / static_cast<double>(n), D);
+  const double s = params.sigma * spacing;
   const double inv_two_s2 = 1.0 / (2.0 * s * s);
   double reach = kGbnCutoff * s;
   if (domain.periodic) reach = std::min(reach, 0.5 * shortest);
@@ -99,7 +99,7 @@ PointSet<D> gbn_optimize(PointSet<D> points, const Domain<D>& domain, const GbnP
   // from 4 dimensions, where 5^D cells outgrow the points they hold; never
   // below the mean spacing, so that a torus with a short period (and so a
   // short reach) does not get far more cells than points.
-  const double edge = std::max(D <= 3 ? 0.5 * reach : reach, s / params.sigma);
+  const double edge = std::max(D <= 3 ? 0.5 * reach : reach, spacing);
   ProgressReporter progress(params.progress, params.iterations);
   PointSet<D> next(n);
   for (int iteration = 0; iteration < params.iterations; ++iteration) {
