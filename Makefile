@@ -73,7 +73,7 @@ san-build: deps
 # lattices run the same code), and gbn's spectrum test (18 s instrumented; the other
 # gbn tests run its code); the property sweep runs 2 of its 20 shards.
 # What it runs: docs/reliability.md.
-SAN_EXCLUDE = consumer_|core_needs|_in_sync|SameDistributionAsTheLiteralMethod|MatchesMaximalDartThrowing|ComparedWithMaximalDartThrowing|OneWindowPerPassLeavesThePhaseLattice|CountsStayWithinTheStatedBound|DefaultSpectrumMatches|PrefixHasTheLaw|PrefixSpectrumMatches|Maximality.LatticeE8|SpreadsPointsIntoBlueNoise
+SAN_EXCLUDE = consumer_|core_needs|_in_sync|SameDistributionAsTheLiteralMethod|MatchesMaximalDartThrowing|ComparedWithMaximalDartThrowing|OneWindowPerPassLeavesThePhaseLattice|CountsStayWithinTheStatedBound|DefaultSpectrumMatches|PrefixHasTheLaw|PrefixSpectrumMatches|Maximality.LatticeE8|SpreadsPointsIntoBlueNoise|Ebeida.FiveDimensions
 sanitize: san-build
 	@cd $(SAN_BUILD) && $(SAN_ENV) PDS_SWEEP_SHARDS=$(SAN_SWEEP_SHARDS) ctest --output-on-failure -j $(JOBS) \
 	  -E "$(SAN_EXCLUDE)"

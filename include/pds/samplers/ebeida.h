@@ -1,5 +1,5 @@
 #pragma once
-// Fast maximal Poisson disk sampling on a flat quadtree (Ebeida et al.), 2D and 3D.
+// Fast maximal Poisson disk sampling on a flat quadtree (Ebeida et al.), 1 to 5 dimensions.
 
 #include <algorithm>
 #include <array>
@@ -38,8 +38,13 @@ struct EbeidaParams {
 /// maximal (every point of the domain lies within `radius` of a sample, up to
 /// a slack of 1e-12 radius plus a few units of rounding of the coordinates); same
 /// seed, same points, on every platform.
-/// Invalid: a radius that is not positive and finite, or whose densest packing
-/// exceeds max_points. Failure: sub-cells still open after 63 levels in 2D, 41 in 3D (a
+/// D from 1 to 5: in 5D darts are drawn in sequence from a list of the open
+/// sub-cells (the sweep's neighbourhoods hold 16,807 cells there); past 5D
+/// the sub-cells that only a union of disks covers multiply nearly 2^D-fold
+/// a level (docs/dimensions.md).
+/// Invalid: a radius that is not positive and finite, whose densest packing
+/// exceeds max_points, or (5D) whose sub-cells could need more than 4 GiB.
+/// Failure: sub-cells still open after 63 levels in 2D, 41 in 3D, 60 in 5D (a
 /// numerical breakdown; not seen in testing).
 template <int D>
 PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uint64_t seed);

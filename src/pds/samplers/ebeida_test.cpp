@@ -113,6 +113,30 @@ TEST(Ebeida, ThinBoxesFinishMaximal) {
   EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(ebeida<4>({0.05}, thin4, 4), thin4, 0.05));
 }
 
+// Five dimensions: darts drawn in sequence from the list of open sub-cells,
+// samples in a grid of edge r. On the torus the count is that of random
+// sequential adsorption at saturation: hyperspheres of diameter r fill
+// 0.1707761 of 5D space (Zhang & Torquato, Phys. Rev. E 88, 053312, 2013);
+// five seeds measured 0.1684-0.1716 at this size (about 600 points).
+TEST(Ebeida, FiveDimensionsMinimumDistanceMaximalAndSaturated) {
+  const double r = 0.28;
+  const Domain<5> torus{{{-0.5, 0.0, 2.0, -3.0, 1.0}}, {{0.5, 1.0, 3.0, -2.0, 2.0}}, true};
+  const auto points = ebeida<5>({r}, torus, 5);
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, torus, r));
+  const double ball = std::pow(M_PI, 2.5) / std::tgamma(3.5) * std::pow(0.5 * r, 5);
+  const double coverage = static_cast<double>(points.size()) * ball / torus.volume();
+  EXPECT_NEAR(coverage, 0.1707761, 0.025 * 0.1707761) << points.size() << " points";
+  const Domain<5> box{{{-0.5, 0.0, 2.0, -3.0, 1.0}}, {{0.2, 0.7, 2.7, -2.3, 1.7}}, false};
+  const auto in_box = ebeida<5>({r}, box, 5);
+  ASSERT_GT(in_box.size(), 100u);
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(in_box, box, r));
+  EXPECT_EQ(in_box, ebeida<5>({r}, box, 5));
+  EXPECT_NE(in_box, ebeida<5>({r}, box, 6));
+  // A box thin along two axes: those wait before they are split.
+  const auto thin = Domain<5>::box({{0.0, 0.0, 0.0, 0.0, 0.0}}, {{1.0, 0.6, 1e-4, 0.5, 1e-6}});
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(ebeida<5>({0.1}, thin, 2), thin, 0.1));
+}
+
 TEST(Ebeida, RejectsBadInput) {
   const auto domain = Domain<2>::unit();
   EXPECT_THROW(ebeida<2>({0.0}, domain, 1), InvalidArgument);
@@ -122,6 +146,10 @@ TEST(Ebeida, RejectsBadInput) {
   // Coordinates so large that rounding is a sizeable part of the radius.
   const auto far = Domain<2>::box({{1e12, 1e12}}, {{1e12 + 1.0, 1e12 + 1.0}});
   EXPECT_THROW(ebeida<2>({1e-3}, far, 1), InvalidArgument);
+  // 5D: more grid cells than 4 GiB of sub-cells could serve, refused before allocation.
+  EbeidaParams tiny{0.02};
+  tiny.max_points = std::uint64_t{1} << 50;
+  EXPECT_THROW(ebeida<5>(tiny, Domain<5>::unit(), 1), InvalidArgument);
 }
 
 }  // namespace
