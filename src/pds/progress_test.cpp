@@ -22,7 +22,12 @@ GenerateRequest request_for(const std::string& method) {
   GenerateRequest r;
   r.torus = true;
   r.seed = 5;
-  if (method == "gbn") {
+  if (method == "sobol" || method == "halton" || method == "hammersley" || method == "latin-hypercube" ||
+      method == "random") {
+    r.dim = 20;
+    r.count = 50000;
+    if (method != "latin-hypercube" && method != "random") r.params["scramble"] = 2;
+  } else if (method == "gbn") {
     r.count = 500;
     r.params["iterations"] = 100;
   } else if (method == "fpo" || method == "best-candidate" || method == "elimination") {
@@ -67,8 +72,9 @@ TEST_P(ProgressOfMethod, CancellationStopsTheRun) {
 }
 
 std::vector<std::string> reporting_methods() {
-  std::vector<std::string> out = {"best-candidate", "bridson", "dart-throwing",    "elimination", "ebeida",
-                                  "maximal-darts",  "wei",     "dunbar-humphreys", "gbn"};
+  std::vector<std::string> out = {"best-candidate", "bridson", "dart-throwing", "elimination", "ebeida",
+                                  "maximal-darts",  "wei",     "dunbar-humphreys", "gbn",        "sobol",
+                                  "halton",         "hammersley", "latin-hypercube", "random"};
   for (const Method& m : methods())
     if (m.name == "jones" || m.name == "fpo") out.push_back(m.name);  // with the CGAL component
   return out;

@@ -19,6 +19,8 @@ struct HaltonParams {
   /// are a few ulps off the exact values) or the correctly rounded radical
   /// inverses.
   RadicalRounding rounding = RadicalRounding::scipy;
+  // Optional progress (points written, against the count) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// The most axes: one prime base each.

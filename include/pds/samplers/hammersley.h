@@ -16,6 +16,8 @@ struct HammersleyParams {
   std::uint64_t first = 0;     // index of the first point returned
   std::uint64_t size = 0;      // N, the size of the whole set; 0 means first + count
   Scramble scramble = Scramble::none;
+  // Optional progress (points written, against the count) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// Points first, ..., first + count - 1 of the N-point Hammersley set, mapped

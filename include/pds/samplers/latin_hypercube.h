@@ -15,6 +15,9 @@ namespace pds {
 
 struct LatinHypercubeParams {
   std::uint64_t count = 1024;  // N, >= 1 and <= 2^32
+  // Optional progress (coordinates written, against count x dimension) and
+  // cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// N points; along each axis an independent uniformly random permutation

@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "pds/progress.h"
 #include "pds/domain.h"
 #include "pds/point.h"
 #include "pds/rng.h"
@@ -299,10 +300,11 @@ enum class RadicalRounding : int {
 /// permutations exactly as DigitPermutation / owen_scramble do; larger bases
 /// use random affine digit permutations d -> (alpha d + beta) mod b (Matousek
 /// 1998), which keep nets nets and every scrambled point uniform.
-/// Unscrambled, `rounding` says how digits become a double.
+/// Unscrambled, `rounding` says how digits become a double. `progress`, if
+/// given, hears the points written.
 void fill_radical_inverses(std::uint32_t first, std::uint64_t count, int dim, int lead, Scramble scramble,
                            RadicalRounding rounding, std::uint64_t seed, std::uint64_t method_tag, const BoxMap& map,
-                           double* out);
+                           double* out, ProgressReporter* progress = nullptr);
 
 /// Maps every point of a set built in the unit cube to the domain, in place.
 template <int D>

@@ -13,6 +13,8 @@ namespace pds {
 
 struct WhiteNoiseParams {
   std::uint64_t count = 1024;  // number of points, >= 1
+  // Optional progress (points written, against the count) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// `count` points drawn independently and uniformly from the domain.

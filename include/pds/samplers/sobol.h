@@ -20,6 +20,8 @@ struct SobolParams {
   std::uint64_t count = 1024;  // points returned, >= 1
   std::uint64_t first = 0;     // index of the first point; first + count <= 2^32
   Scramble scramble = Scramble::none;
+  // Optional progress (points written, against the count) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// Points first, ..., first + count - 1 of the D-dimensional Sobol sequence in

@@ -34,7 +34,7 @@ const Method& white_noise_method() {
       .compare = true,
       .dims = {1, kMaxCloudDim},
       .memory_ratio = 1,
-      .run = [](const GenerateRequest& r) { return white_noise({*r.count}, box_of(r), r.seed); },
+      .run = [](const GenerateRequest& r) { return white_noise({*r.count, r.progress}, box_of(r), r.seed); },
   };
   return method;
 }
@@ -136,7 +136,7 @@ const Method& latin_hypercube_method() {
       .exact_count = true,
       .dims = {1, kMaxCloudDim},
       .memory_ratio = 1,
-      .run = [](const GenerateRequest& r) { return latin_hypercube({*r.count}, box_of(r), r.seed); },
+      .run = [](const GenerateRequest& r) { return latin_hypercube({*r.count, r.progress}, box_of(r), r.seed); },
   };
   return method;
 }

@@ -65,6 +65,7 @@ Params sequence_params(const GenerateRequest& r, const char* name) {
   params.count = *r.count;
   params.first = static_cast<std::uint64_t>(r.param("first", 0));
   params.scramble = scramble_from(name, static_cast<int>(r.param("scramble", 0)));
+  params.progress = r.progress;
   return params;
 }
 

@@ -36,8 +36,10 @@ void halton_fill(const HaltonParams& params, const CloudBox& box, std::uint64_t 
     throw InvalidArgument("halton: dimension " + std::to_string(dim) + " is not supported (supported: 1 to " +
                           std::to_string(kHaltonMaxDim) + ", one prime base per axis)");
   require_index_range("halton", params.first, params.count);
+  ProgressReporter progress(params.progress, static_cast<double>(params.count));
   fill_radical_inverses(static_cast<std::uint32_t>(params.first), params.count, dim, 0, params.scramble,
-                        params.rounding, seed, 1, BoxMap(box), out);
+                        params.rounding, seed, 1, BoxMap(box), out, &progress);
+  progress.finish();
 }
 
 PointCloud halton(const HaltonParams& params, const CloudBox& box, std::uint64_t seed) {

@@ -32,12 +32,14 @@ void hammersley_fill(const HammersleyParams& params, const CloudBox& box, std::u
                           std::to_string(params.count) + " exceed the set's size " + std::to_string(size));
   const BoxMap map(box);
   // Axes 1 and up: Halton's radical inverses, correctly rounded (SciPy has no Hammersley set to follow).
+  ProgressReporter progress(params.progress, static_cast<double>(params.count));
   fill_radical_inverses(static_cast<std::uint32_t>(params.first), params.count, dim, 1, params.scramble,
-                        RadicalRounding::correct, seed, 2, map, out);
+                        RadicalRounding::correct, seed, 2, map, out, &progress);
   const double n = static_cast<double>(size);
   const auto stride = static_cast<std::size_t>(dim);
   for (std::uint64_t i = 0; i < params.count; ++i)
     out[i * stride] = map(0, static_cast<double>(params.first + i) / n);
+  progress.finish();
 }
 
 PointCloud hammersley(const HammersleyParams& params, const CloudBox& box, std::uint64_t seed) {

@@ -46,12 +46,18 @@ void latin_hypercube_fill(const LatinHypercubeParams& params, const CloudBox& bo
   const auto dim = static_cast<std::size_t>(box.dim());
   const BoxMap map(box);
   const SlabJitter within(n);
+  // Axis after axis: progress counts coordinates.
+  ProgressReporter progress(params.progress, static_cast<double>(n) * static_cast<double>(dim));
   for (std::size_t a = 0; a < dim; ++a) {
     Rng permute(seed, {0, static_cast<std::uint64_t>(a)});
     Rng jitter(seed, {1, static_cast<std::uint64_t>(a)});
     const std::vector<std::uint32_t> slab = random_permutation(static_cast<std::uint32_t>(n), permute);
-    for (std::uint64_t i = 0; i < n; ++i) out[i * dim + a] = map(static_cast<int>(a), within(slab[i], jitter));
+    for (std::uint64_t i = 0; i < n; ++i) {
+      if ((i & 65535) == 0) progress.update(static_cast<double>(a * n + i));
+      out[i * dim + a] = map(static_cast<int>(a), within(slab[i], jitter));
+    }
   }
+  progress.finish();
 }
 
 PointCloud latin_hypercube(const LatinHypercubeParams& params, const CloudBox& box, std::uint64_t seed) {

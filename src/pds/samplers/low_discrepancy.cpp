@@ -219,7 +219,7 @@ class RadixAxis {
 
 void fill_radical_inverses(std::uint32_t first, std::uint64_t count, int dim, int lead, Scramble scramble,
                            RadicalRounding rounding, std::uint64_t seed, std::uint64_t method_tag, const BoxMap& map,
-                           double* out) {
+                           double* out, ProgressReporter* progress) {
   std::vector<RadixAxis> axes;
   axes.reserve(static_cast<std::size_t>(dim - lead));
   for (int a = lead; a < dim; ++a) {
@@ -228,6 +228,7 @@ void fill_radical_inverses(std::uint32_t first, std::uint64_t count, int dim, in
   }
   const auto stride = static_cast<std::size_t>(dim);
   for (std::uint64_t i = 0; i < count; ++i) {
+    if (progress && (i & 1023) == 0) progress->update(static_cast<double>(i));
     double* p = out + i * stride;
     for (int a = lead; a < dim; ++a) {
       RadixAxis& axis = axes[static_cast<std::size_t>(a - lead)];

@@ -8,8 +8,12 @@ namespace pds {
 void white_noise_fill(const WhiteNoiseParams& params, const CloudBox& box, std::uint64_t seed, double* out) {
   Rng rng(seed);
   const auto n = static_cast<std::size_t>(box.dim());
-  for (std::uint64_t i = 0; i < params.count; ++i)
+  ProgressReporter progress(params.progress, static_cast<double>(params.count));
+  for (std::uint64_t i = 0; i < params.count; ++i) {
+    if ((i & 4095) == 0) progress.update(static_cast<double>(i));
     for (std::size_t a = 0; a < n; ++a) out[i * n + a] = rng.uniform(box.lo[a], box.hi[a]);
+  }
+  progress.finish();
 }
 
 PointCloud white_noise(const WhiteNoiseParams& params, const CloudBox& box, std::uint64_t seed) {

@@ -201,13 +201,23 @@ class SobolWalk {
 }  // namespace
 
 void sobol_fill(const SobolParams& params, const CloudBox& box, std::uint64_t seed, double* out) {
-  SobolWalk(params, box, seed).fill(params.count, out);
+  SobolWalk walk(params, box, seed);
+  ProgressReporter progress(params.progress, static_cast<double>(params.count));
+  const std::uint64_t block = std::max<std::uint64_t>(1, 32768 / static_cast<std::uint64_t>(box.dim()));
+  for (std::uint64_t done = 0; done < params.count;) {
+    const std::uint64_t now = std::min(block, params.count - done);
+    walk.fill(now, out + done * static_cast<std::uint64_t>(box.dim()));
+    done += now;
+    progress.update(static_cast<double>(done));
+  }
+  progress.finish();
 }
 
 PointCloud sobol(const SobolParams& params, const CloudBox& box, std::uint64_t seed) {
   PointCloud cloud{box.dim(), {}};
   const std::size_t total = cloud_doubles("sobol", params.count, box.dim());
   SobolWalk walk(params, box, seed);
+  ProgressReporter progress(params.progress, static_cast<double>(params.count));
   // Staged through a buffer of about 256 KB and appended: the set's memory
   // is written once, not zeroed first (as resize would) and then written.
   const std::uint64_t block = std::max<std::uint64_t>(1, 32768 / static_cast<std::uint64_t>(box.dim()));
@@ -218,7 +228,9 @@ PointCloud sobol(const SobolParams& params, const CloudBox& box, std::uint64_t s
     walk.fill(now, stage.data());
     cloud.coords.insert(cloud.coords.end(), stage.begin(), stage.begin() + static_cast<std::ptrdiff_t>(now * box.dim()));
     done += now;
+    progress.update(static_cast<double>(done));
   }
+  progress.finish();
   return cloud;
 }
 
