@@ -251,7 +251,9 @@ void add_analyze(CLI::App& app) {
           lo.assign(static_cast<std::size_t>(dim), 0.0);
           hi.assign(static_cast<std::size_t>(dim), 1.0);
         }
-        return analyze(std::span<const PointCloud>(clouds), lo, hi, opt->domain.torus, {.radius = r});
+        const ProgressBar bar("analysis", opt->generation.quiet);
+        return analyze(std::span<const PointCloud>(clouds), lo, hi, opt->domain.torus,
+                       {.radius = r, .progress = bar.progress()});
       }
       return visit_dim<kMinDim, kMaxDim>(dim, [&](auto d) {
         constexpr int D = decltype(d)::value;

@@ -138,6 +138,64 @@ TEST(ProgressOfAnalysis, OneUnitPerSetThenWithinTheSpectrumAndThePairCorrelation
   }
 }
 
+// One set in 6D: no spectrum, and the set's unit moves measure by measure
+// (spacing, then each discrepancy), and a stop between them cancels.
+TEST(ProgressOfAnalysis, WithinOneSetMeasureByMeasure) {
+  GenerateRequest r;
+  r.count = 300;
+  r.dim = 6;
+  const PointSet<6> set = generate("random", r).as<6>();
+  const std::vector<PointSet<6>> sets = {set};
+  std::vector<Report> reports;
+  AnalysisOptions options;
+  options.progress.report = [&](double done, double total) {
+    reports.push_back({done, total});
+    return true;
+  };
+  const Domain<6> domain = Domain<6>::unit();
+  const AnalysisReport with = analyze<6>(sets, domain, options);
+  int inside = 0;
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    EXPECT_EQ(reports[i].total, 3.0);
+    if (i > 0) {
+      EXPECT_GT(reports[i].done, reports[i - 1].done);
+    }
+    inside += reports[i].done > 0 && reports[i].done < 1;
+  }
+  EXPECT_GE(inside, 4);
+  EXPECT_EQ(reports.back().done, 3.0);
+  options.progress = {};
+  EXPECT_EQ(analyze<6>(sets, domain, options).mixture_discrepancy, with.mixture_discrepancy);
+  options.progress.report = [](double done, double) { return done < 0.5; };
+  EXPECT_THROW(analyze<6>(sets, domain, options), Cancelled);
+}
+
+// Past 8 dimensions: the nearest neighbours, then each discrepancy.
+TEST(ProgressOfAnalysis, PastEightDimensionsMeasureByMeasure) {
+  GenerateRequest r;
+  r.count = 300;
+  r.dim = 12;
+  const std::vector<PointCloud> sets = {generate("random", r), generate("halton", r)};
+  const std::vector<double> lo(12, 0.0), hi(12, 1.0);
+  std::vector<Report> reports;
+  AnalysisOptions options;
+  options.progress.report = [&](double done, double total) {
+    reports.push_back({done, total});
+    return true;
+  };
+  const AnalysisReport with = analyze(std::span<const PointCloud>(sets), lo, hi, false, options);
+  ASSERT_EQ(reports.size(), 10u);  // 0, the neighbours, four a set (the last of them is the end)
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    EXPECT_EQ(reports[i].total, 9.0);
+    EXPECT_EQ(reports[i].done, static_cast<double>(std::min<std::size_t>(i, 9)));
+  }
+  options.progress = {};
+  EXPECT_EQ(analyze(std::span<const PointCloud>(sets), lo, hi, false, options).mixture_discrepancy,
+            with.mixture_discrepancy);
+  options.progress.report = [](double done, double) { return done < 3; };
+  EXPECT_THROW(analyze(std::span<const PointCloud>(sets), lo, hi, false, options), Cancelled);
+}
+
 TEST(ProgressOfRender, BlocksInRoundsTheSameImageAndCancellation) {
   const auto scene = make_scene("zone-plate", 300, 200);
   const auto sampler = make_image_sampler("jittered", {.spp = 2, .seed = 4});

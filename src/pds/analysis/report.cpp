@@ -134,17 +134,25 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
   const auto m = static_cast<double>(sets.size());
   ProgressReporter progress(options.progress, m + 2);
   for (std::size_t k = 0; k < sets.size(); ++k) {
-    progress.update(static_cast<double>(k));
+    // A set's unit in six steps, one a measure: in many dimensions each
+    // discrepancy is O(N^2 D) and can take a second or more.
+    const auto step = [&](int done) { progress.update(static_cast<double>(k) + done / 6.0); };
+    step(0);
     const PointSet<D>& s = sets[k];
     const Spacing sp = spacing(s, domain);
     rho_min += sp.rho_min;
     rho_mean += sp.rho_mean;
+    step(1);
     if (l2_ok) l2 += l2_star_discrepancy(s, domain);
+    step(2);
     if (star_ok) star += star_discrepancy(s, domain);
+    step(3);
     if (hickernell_ok) {
       const PointCloud cloud = PointCloud::from(s);
       hickernell[0] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Centered);
+      step(4);
       hickernell[1] += discrepancy(cloud, lo, hi, DiscrepancyMethod::WrapAround);
+      step(5);
       hickernell[2] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Mixture);
     }
   }
@@ -223,7 +231,11 @@ AnalysisReport analyze(std::span<const PointCloud> sets, std::span<const double>
   out.lo.assign(lo.begin(), lo.end());
   out.hi.assign(hi.begin(), hi.end());
   out.torus = periodic;
+  // Progress: the first set's nearest neighbours, then each set's four
+  // discrepancies (O(N^2 D) each), one unit apiece.
+  ProgressReporter progress(options.progress, 1.0 + 4.0 * static_cast<double>(sets.size()));
   const NearestNeighbors nn = nearest_neighbors(sets[0], lo, hi, periodic);
+  progress.update(1);
   double sum = 0;
   for (std::size_t i = 0; i < nn.distance.size(); ++i) {
     sum += nn.distance[i];
@@ -252,13 +264,19 @@ AnalysisReport analyze(std::span<const PointCloud> sets, std::span<const double>
     return s.size() <= options.discrepancy_points;
   });
   std::array<double, 4> sums{};
-  for (const PointCloud& s : sets) {
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    const PointCloud& s = sets[k];
+    const auto step = [&](int done) { progress.update(1.0 + 4.0 * static_cast<double>(k) + done); };
     if (l2_ok) sums[0] += discrepancy(s, lo, hi, DiscrepancyMethod::L2Star);
+    step(1);
     if (hickernell_ok) {
       sums[1] += discrepancy(s, lo, hi, DiscrepancyMethod::Centered);
+      step(2);
       sums[2] += discrepancy(s, lo, hi, DiscrepancyMethod::WrapAround);
+      step(3);
       sums[3] += discrepancy(s, lo, hi, DiscrepancyMethod::Mixture);
     }
+    step(4);
   }
   const double m = static_cast<double>(sets.size());
   if (l2_ok) out.l2_star_discrepancy = sums[0] / m;
@@ -269,6 +287,7 @@ AnalysisReport analyze(std::span<const PointCloud> sets, std::span<const double>
   }
   out.spectrum_note = "not computed: the spectrum is measured in 2D and 3D only";
   out.pcf_note = "not computed: the pair correlation is measured in 2D and 3D only";
+  progress.finish();
   return out;
 }
 
