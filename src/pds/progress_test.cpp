@@ -27,6 +27,8 @@ GenerateRequest request_for(const std::string& method) {
     r.dim = 20;
     r.count = 50000;
     if (method != "latin-hypercube" && method != "random") r.params["scramble"] = 2;
+  } else if (method == "jittered" || method == "multi-jittered") {
+    r.count = 1 << 20;  // 16 reports at one in 65,536 points
   } else if (method == "gbn") {
     r.count = 500;
     r.params["iterations"] = 100;
@@ -74,7 +76,8 @@ TEST_P(ProgressOfMethod, CancellationStopsTheRun) {
 std::vector<std::string> reporting_methods() {
   std::vector<std::string> out = {"best-candidate", "bridson", "dart-throwing", "elimination", "ebeida",
                                   "maximal-darts",  "wei",     "dunbar-humphreys", "gbn",        "sobol",
-                                  "halton",         "hammersley", "latin-hypercube", "random"};
+                                  "halton",         "hammersley", "latin-hypercube", "random", "jittered",
+                                  "multi-jittered"};
   for (const Method& m : methods())
     if (m.name == "jones" || m.name == "fpo") out.push_back(m.name);  // with the CGAL component
   return out;

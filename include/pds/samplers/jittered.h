@@ -7,11 +7,14 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
 struct JitteredParams {
   std::array<int, 3> cells{1, 1, 1};  // strata per axis (the first D are used), each >= 1
+  // Optional progress (points made, against their number) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// One uniform point in each stratum, axis 0 varying fastest.

@@ -7,12 +7,15 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
 struct MultiJitteredParams {
   std::array<int, 3> cells{32, 32, 1};  // strata per axis (the first D are used), each >= 1; N = their product
   bool correlated = true;  // Kensler: one shuffle per axis, not one per column (lower variance in practice)
+  // Optional progress (points made, against N) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// N = prod(cells) points, axis 0 varying fastest over the cells.

@@ -86,6 +86,7 @@ const Method& jittered_method() {
               const auto cells = strata_for_count(domain, *r.count);
               JitteredParams params;
               std::copy(cells.begin(), cells.end(), params.cells.begin());
+              params.progress = r.progress;
               return jittered(params, domain, r.seed);
             });
           },
@@ -118,6 +119,7 @@ const Method& multi_jittered_method() {
               MultiJitteredParams params;
               std::copy(cells.begin(), cells.end(), params.cells.begin());
               params.correlated = r.param("correlated", 1) != 0;
+              params.progress = r.progress;
               return multi_jittered(params, domain, r.seed);
             });
           },

@@ -20,7 +20,10 @@ PointSet<D> jittered(const JitteredParams& params, const Domain<D>& domain, std:
   Rng rng(seed);
   PointSet<D> points(total);
   std::array<int, D> index{};
-  for (auto& p : points) {
+  ProgressReporter progress(params.progress, static_cast<double>(total));
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if ((k & 65535) == 0) progress.update(static_cast<double>(k));
+    Point<D>& p = points[k];
     for (int i = 0; i < D; ++i) {
       const double edge = domain.extent(i) / params.cells[i];
       const double lo = domain.lo[i] + index[i] * edge;
@@ -30,6 +33,7 @@ PointSet<D> jittered(const JitteredParams& params, const Domain<D>& domain, std:
     }
     for (int i = 0; i < D && ++index[i] == params.cells[i]; ++i) index[i] = 0;
   }
+  progress.finish();
   return points;
 }
 

@@ -61,7 +61,10 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
   const UnitCubeMap<D> to_domain(domain);
   PointSet<D> points(n);
   std::array<std::uint32_t, D> cell{};
-  for (auto& p : points) {
+  ProgressReporter progress(params.progress, static_cast<double>(n));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if ((i & 65535) == 0) progress.update(static_cast<double>(i));
+    Point<D>& p = points[i];
     Point<D> u;
     for (int k = 0; k < D; ++k) {
       std::uint64_t r = 0;  // the other coordinates of the cell, mixed radix, highest axis first
@@ -74,6 +77,7 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
     p = to_domain(u);
     for (int l = 0; l < D && ++cell[l] == static_cast<std::uint32_t>(params.cells[l]); ++l) cell[l] = 0;
   }
+  progress.finish();
   return points;
 }
 
