@@ -27,7 +27,7 @@ GenerateRequest request_for(const std::string& method) {
     r.dim = 20;
     r.count = 50000;
     if (method != "latin-hypercube" && method != "random") r.params["scramble"] = 2;
-  } else if (method == "jittered" || method == "multi-jittered") {
+  } else if (method == "jittered" || method == "multi-jittered" || method == "regular") {
     r.count = 1 << 20;  // 16 reports at one in 65,536 points
   } else if (method == "gbn") {
     r.count = 500;
@@ -77,7 +77,7 @@ std::vector<std::string> reporting_methods() {
   std::vector<std::string> out = {"best-candidate", "bridson", "dart-throwing", "elimination", "ebeida",
                                   "maximal-darts",  "wei",     "dunbar-humphreys", "gbn",        "sobol",
                                   "halton",         "hammersley", "latin-hypercube", "random", "jittered",
-                                  "multi-jittered"};
+                                  "multi-jittered", "regular"};
   for (const Method& m : methods())
     if (m.name == "jones" || m.name == "fpo") out.push_back(m.name);  // with the CGAL component
   return out;

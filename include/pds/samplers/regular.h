@@ -6,11 +6,14 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
 struct RegularParams {
   std::array<int, 3> cells{1, 1, 1};  // cells per axis (the first D are used), each >= 1
+  // Optional progress (points made, against their number) and cancellation (pds/progress.h).
+  Progress progress;
 };
 
 /// One point at the centre of each cell, axis 0 varying fastest.

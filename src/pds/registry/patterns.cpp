@@ -59,6 +59,7 @@ const Method& regular_method() {
               const auto cells = r.count ? strata_for_count(domain, *r.count) : strata_for_spacing(domain, *r.radius);
               RegularParams params;
               std::copy(cells.begin(), cells.end(), params.cells.begin());
+              params.progress = r.progress;
               double total = 1;
               for (int c : cells) total *= c;
               require_point_budget(total, D, r.max_points, "regular grid");

@@ -18,10 +18,13 @@ PointSet<D> regular(const RegularParams& params, const Domain<D>& domain) {
   }
   PointSet<D> points(total);
   std::array<int, D> index{};
-  for (auto& p : points) {
-    for (int i = 0; i < D; ++i) p[i] = stratum_centre(domain, i, index[i], params.cells[i]);
+  ProgressReporter progress(params.progress, static_cast<double>(total));
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    if ((k & 65535) == 0) progress.update(static_cast<double>(k));
+    for (int i = 0; i < D; ++i) points[k][i] = stratum_centre(domain, i, index[i], params.cells[i]);
     for (int i = 0; i < D && ++index[i] == params.cells[i]; ++i) index[i] = 0;
   }
+  progress.finish();
   return points;
 }
 
