@@ -47,6 +47,16 @@ def test_surface_candidates_give_a_denser_set_as_scipys(d, radius):
         qmc.PoissonDisk(2, radius=0.05, hypersphere="surface", method="ebeida")
 
 
+def test_ebeida_fills_five_dimensions_to_saturation():
+    # A maximal set: pds.analyze finds no room for another point at the radius.
+    sample = qmc.PoissonDisk(5, radius=0.35, method="ebeida", seed=3).fill_space()
+    assert sample.shape[1] == 5 and len(sample) > 50
+    assert np.all(sample >= 0) and np.all(sample < 1)
+    assert min_distance(sample) >= 0.35
+    report = pds.analyze(sample, radius=0.35)
+    assert report["maximal"] is True
+
+
 def test_random_continues_and_fill_space_completes():
     engine = qmc.PoissonDisk(2, radius=0.03, seed=7)
     first = engine.random(10)
