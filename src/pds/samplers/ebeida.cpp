@@ -137,7 +137,7 @@ class UnionCover {
     const double target = radius2 - h2;
     // Start at the disk whose single-disk value is least.
     std::size_t start = 0;
-    double value = kInf;
+    double value = kInf, least_q = kInf;
     for (std::size_t i = 0; i < k; ++i) {
       double q = 0.0, spread = 0.0;
       for (int a = 0; a < D; ++a) {
@@ -147,11 +147,15 @@ class UnionCover {
         spread += edge[a] * std::abs(d);
       }
       q_[i] = q;
+      least_q = std::min(least_q, q);
       if (q + spread < value) {
         value = q + spread;
         start = i;
       }
     }
+    // Every weighting's value is at least the least |d_i|^2 (a box whose
+    // centre no disk reaches is not covered): no search then.
+    if (!(least_q < target)) return false;
     double mean_q = q_[start];
     std::array<double, D> m = d_[start];
     for (int step = 0; step < kSteps && !(value < target); ++step) {
