@@ -54,6 +54,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "cover_cells.h"
 #include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/grid.h"
@@ -234,36 +235,16 @@ class EbeidaSampler {
         r2_(params.radius * params.radius),
         progress_(params.progress, typical_count(sizing_volume(domain, params.radius), params.radius, D)) {
     const double r = params.radius;
-    double cells = 1.0, scale = 0.0;
-    for (int a = 0; a < D; ++a) {
-      // Slightly more cells than extent sqrt(D) / r: a cell's diagonal stays
-      // below r after rounding, so a sample covers its whole cell.
-      n_[a] = static_cast<int>(std::max(1.0, std::ceil(domain.extent(a) * std::sqrt(double(D)) * (1.0 + 1e-9) / r)));
-      cells *= n_[a];
-      scale = std::max({scale, std::abs(domain.lo[a]), std::abs(domain.hi[a])});
-    }
-    if (cells > static_cast<double>(1 << 30))
+    detail::CoverCells<D> grid("ebeida", domain, r);
+    if (grid.count > static_cast<double>(1 << 30))
       throw InvalidArgument("ebeida: radius " + detail::format_number(r) +
                             " needs more than 2^30 grid cells for this domain");
-    // Rounding of coordinates of this size can move a corner or a dart by a
-    // few units of 2^-52 scale; a sub-cell is dropped only with that margin.
-    // A region covered only by disks that overlap by less than the slack can
-    // neither be proven covered nor take a dart, and refines until the level
-    // limit; keeping the slack a millionth of r makes that a one in a
-    // million event per near-tangency (the property sweep found a 1D torus
-    // at 2.2e5 with r 4.9e-7, slack 1.6e-3 r, that broke down so).
-    const double slack = 1e-12 * r + 16.0 * scale * 0x1.0p-52;
-    if (slack > 1e-6 * r)
-      throw InvalidArgument("ebeida: radius " + detail::format_number(r) +
-                            " is too small for coordinates of magnitude " + detail::format_number(scale));
-    cover2_ = (r - slack) * (r - slack);
+    grid.make_corners(domain);
+    n_ = grid.n;
+    cover2_ = grid.cover2;
+    corners_ = std::move(grid.corners);
     hood_ = GridNeighbourhood<D>(domain, n_);
     const std::size_t stride = hood_.size();
-    for (int a = 0; a < D; ++a) {
-      corners_[a].resize(static_cast<std::size_t>(n_[a]) + 1);
-      for (int i = 0; i < n_[a]; ++i) corners_[a][i] = domain.lo[a] + domain.extent(a) * i / n_[a];
-      corners_[a][n_[a]] = domain.hi[a];
-    }
     // The cells that can hold a sample closer than r to a point of a cell: the
     // gap between the two cells along each axis is (|offset| - 1) edges;
     // nearest cells first (a rejected dart usually stops at the first few).
@@ -673,33 +654,21 @@ class EbeidaListSampler {
         rng_(seed, {0x6562656964614844ULL}),
         samples_(Grid<D>::for_conflicts(domain, params.radius)),
         progress_(params.progress, typical_count(sizing_volume(domain, params.radius), params.radius, D)) {
-    double cells = 1.0, scale = 0.0;
-    for (int a = 0; a < D; ++a) {
-      // As in the sweep: a cell's diagonal stays below r after rounding.
-      n_[a] = static_cast<int>(std::max(1.0, std::ceil(domain.extent(a) * std::sqrt(double(D)) * (1.0 + 1e-9) / r_)));
-      cells *= n_[a];
-      scale = std::max({scale, std::abs(domain.lo[a]), std::abs(domain.hi[a])});
-    }
+    detail::CoverCells<D> grid("ebeida", domain, r_);
     // A byte of state a cell, a 4-byte entry at level 0, and at worst two
     // lists of kMaxSubsPerCell sub-cells a cell while a level is refined.
-    const double bytes = cells * (5.0 + 2.0 * kMaxSubsPerCell * static_cast<double>(sizeof(Sub)));
+    const double bytes = grid.count * (5.0 + 2.0 * kMaxSubsPerCell * static_cast<double>(sizeof(Sub)));
     if (bytes > kMaxBytes)
       throw InvalidArgument("ebeida: radius " + detail::format_number(r_) + " needs " +
-                            detail::format_number(cells) + " grid cells in " + std::to_string(D) +
+                            detail::format_number(grid.count) + " grid cells in " + std::to_string(D) +
                             " dimensions for this domain, and up to " + detail::format_number(bytes / 0x1.0p30) +
                             " GiB for their sub-cells (more than " + detail::format_number(kMaxBytes / 0x1.0p30) +
                             "); bridson or dart-throwing take such sets");
-    const double slack = 1e-12 * r_ + 16.0 * scale * 0x1.0p-52;
-    if (slack > 1e-6 * r_)
-      throw InvalidArgument("ebeida: radius " + detail::format_number(r_) +
-                            " is too small for coordinates of magnitude " + detail::format_number(scale));
-    cover2_ = (r_ - slack) * (r_ - slack);
+    grid.make_corners(domain);
+    n_ = grid.n;
+    cover2_ = grid.cover2;
+    corners_ = std::move(grid.corners);
     hood_ = GridNeighbourhood<D>(domain, n_);
-    for (int a = 0; a < D; ++a) {
-      corners_[a].resize(static_cast<std::size_t>(n_[a]) + 1);
-      for (int i = 0; i < n_[a]; ++i) corners_[a][i] = domain.lo[a] + domain.extent(a) * i / n_[a];
-      corners_[a][n_[a]] = domain.hi[a];
-    }
     delay_ = detail::quadtree_axis_delays<D>(domain, n_, kMaxLevels);
   }
 

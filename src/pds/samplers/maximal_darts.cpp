@@ -63,6 +63,7 @@
 #include <string>
 #include <vector>
 
+#include "cover_cells.h"
 #include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/grid_neighbourhood.h"
@@ -158,30 +159,15 @@ class MaximalDartsSampler {
         threads_(params.threads),
         progress_(params.progress),
         reporter_(params.progress, typical_count(sizing_volume(domain, params.radius), params.radius, D)) {
-    double cells = 1.0, scale = 0.0;
-    for (int a = 0; a < D; ++a) {
-      // Slightly more cells than extent sqrt(D) / r: a cell's diagonal stays
-      // below r after rounding, so a sample covers its whole cell.
-      n_[a] = static_cast<int>(std::max(1.0, std::ceil(domain.extent(a) * std::sqrt(double(D)) * (1.0 + 1e-9) / r_)));
-      cells *= n_[a];
-      scale = std::max({scale, std::abs(domain.lo[a]), std::abs(domain.hi[a])});
-    }
-    if (cells > static_cast<double>(1 << 30))
+    detail::CoverCells<D> grid("maximal-darts", domain, r_);
+    if (grid.count > static_cast<double>(1 << 30))
       throw InvalidArgument("maximal-darts: radius " + detail::format_number(r_) +
                             " needs more than 2^30 grid cells for this domain");
-    // A sub-cell is dropped only with a margin for the rounding of
-    // coordinates of this magnitude (as in ebeida.cpp).
-    const double slack = 1e-12 * r_ + 16.0 * scale * 0x1.0p-52;
-    if (slack > 1e-6 * r_)
-      throw InvalidArgument("maximal-darts: radius " + detail::format_number(r_) +
-                            " is too small for coordinates of magnitude " + detail::format_number(scale));
-    cover2_ = (r_ - slack) * (r_ - slack);
+    grid.make_corners(domain);
+    n_ = grid.n;
+    cover2_ = grid.cover2;
+    corners_ = std::move(grid.corners);
     hood_ = GridNeighbourhood<D>(domain, n_);
-    for (int a = 0; a < D; ++a) {
-      corners_[a].resize(static_cast<std::size_t>(n_[a]) + 1);
-      for (int i = 0; i < n_[a]; ++i) corners_[a][i] = domain.lo[a] + domain.extent(a) * i / n_[a];
-      corners_[a][n_[a]] = domain.hi[a];
-    }
     delay_ = detail::quadtree_axis_delays<D>(domain, n_, kMaxLevel);
     // The own cell, then every cell that can hold a sample closer than r to a
     // point of the cell, nearest first (a rejected dart stops early).
