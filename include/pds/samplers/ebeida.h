@@ -29,7 +29,8 @@ struct EbeidaParams {
 /// A grid of cells of edge < radius/sqrt(D) (one sample per cell at most)
 /// guides dart throwing; cells that no dart can hit any more are dropped, and
 /// the rest are split into 2^D sub-cells, keeping only those no single disk
-/// covers (a flat quadtree), until nothing is left. Darts arrive as a Poisson
+/// covers (from 4D, nor a union of disks, by a test of weighted distances)
+/// (a flat quadtree), until nothing is left. Darts arrive as a Poisson
 /// process in time on the cells still open, and each is kept if no earlier
 /// kept sample lies within `radius`: resolved cell by cell in a sweep, this is
 /// exactly sequential dart throwing until no dart fits (maximal random
@@ -40,8 +41,8 @@ struct EbeidaParams {
 /// seed, same points, on every platform.
 /// D from 1 to 5: in 5D darts are drawn in sequence from a list of the open
 /// sub-cells (the sweep's neighbourhoods hold 16,807 cells there); past 5D
-/// the sub-cells that only a union of disks covers multiply nearly 2^D-fold
-/// a level (docs/dimensions.md).
+/// the sub-cells that cannot be proven covered multiply nearly 2^D-fold a
+/// level (docs/dimensions.md).
 /// Invalid: a radius that is not positive and finite, whose densest packing
 /// exceeds max_points, or (5D) whose sub-cells could need more than 4 GiB.
 /// Failure: sub-cells still open after 63 levels in 2D, 41 in 3D, 60 in 5D (a
