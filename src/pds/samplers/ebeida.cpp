@@ -794,7 +794,10 @@ class EbeidaListSampler {
                 [](const Sub& a, const Sub& b) { return a.cell != b.cell ? a.cell < b.cell : a.lo < b.lo; });
     std::uint32_t gathered = std::numeric_limits<std::uint32_t>::max();
     Point<D> cell_centre;
-    for (const Entry& entry : open) {
+    for (std::size_t k = 0; k < open.size(); ++k) {
+      // A level's refinement can take seconds: a cancellation is heard here too.
+      if ((k & (kReportEvery - 1)) == 0) progress_.update(static_cast<double>(samples_.size()));
+      const Entry& entry = open[k];
       const std::uint32_t cell = cell_of(entry);
       if (closed_[cell]) continue;
       if (cell != gathered) {

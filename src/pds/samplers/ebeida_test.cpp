@@ -2,14 +2,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "nn_statistics.h"
 #include "pds/analysis/distance.h"
 #include "pds/analysis/maximality.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
+#include "pds/progress.h"
 #include "pds/samplers/jones.h"
 #include "set_checks.h"
 
@@ -135,6 +138,25 @@ TEST(Ebeida, FiveDimensionsMinimumDistanceMaximalAndSaturated) {
   // A box thin along two axes: those wait before they are split.
   const auto thin = Domain<5>::box({{0.0, 0.0, 0.0, 0.0, 0.0}}, {{1.0, 0.6, 1e-4, 0.5, 1e-6}});
   EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(ebeida<5>({0.1}, thin, 2), thin, 0.1));
+}
+
+// The 5D loop reports samples placed, monotone, the same points with and
+// without a listener, and stops when asked.
+TEST(Ebeida, FiveDimensionsReportProgressAndStop) {
+  const Domain<5> torus = Domain<5>::unit(true);
+  EbeidaParams params{0.4};
+  std::vector<double> done;
+  params.progress.report = [&](double d, double) {
+    done.push_back(d);
+    return true;
+  };
+  const auto points = ebeida<5>(params, torus, 2);
+  ASSERT_GE(done.size(), 10u);
+  EXPECT_TRUE(std::is_sorted(done.begin(), done.end()));
+  EXPECT_EQ(points, ebeida<5>({0.4}, torus, 2));
+  int calls = 0;
+  params.progress.report = [&](double, double) { return ++calls < 5; };
+  EXPECT_THROW(ebeida<5>(params, torus, 2), Cancelled);
 }
 
 TEST(Ebeida, RejectsBadInput) {
