@@ -96,7 +96,7 @@ class PoissonDisk:
     ----------
     d : int
         Dimension of the parameter space: any the method takes (1 to 8
-        for "bridson" and "dart-throwing", 1 to 5 for "ebeida", 1 to 4 for "wei").
+        for "bridson" and "dart-throwing", 1 to 5 for "ebeida" and "wei").
     radius : float
         Minimal distance to keep between points (default 0.05), in the units
         of the bounds.

@@ -57,6 +57,13 @@ def test_ebeida_fills_five_dimensions_to_saturation():
     assert report["maximal"] is True
 
 
+def test_wei_fills_five_dimensions():
+    sample = qmc.PoissonDisk(5, radius=0.35, method="wei", seed=3).fill_space()
+    assert sample.shape[1] == 5 and len(sample) > 50
+    assert np.all(sample >= 0) and np.all(sample < 1)
+    assert min_distance(sample) >= 0.35
+
+
 def test_random_continues_and_fill_space_completes():
     engine = qmc.PoissonDisk(2, radius=0.03, seed=7)
     first = engine.random(10)
@@ -143,8 +150,8 @@ def test_constructor_errors_match_scipy():
         qmc.PoissonDisk(9)
     with pytest.raises(ValueError, match="1 to 5 dimensions, got d=6"):
         qmc.PoissonDisk(6, method="ebeida")
-    with pytest.raises(ValueError, match="1 to 4 dimensions, got d=5"):
-        qmc.PoissonDisk(5, method="wei")
+    with pytest.raises(ValueError, match="1 to 5 dimensions, got d=6"):
+        qmc.PoissonDisk(6, method="wei")
     with pytest.raises(NotImplementedError):
         qmc.PoissonDisk(2, optimization="lloyd")
     with pytest.raises(ValueError, match="radius"):

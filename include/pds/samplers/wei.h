@@ -54,13 +54,19 @@ inline constexpr int kWeiMaxWindows = 1000;
 /// after another in a random order, the cells of a group in parallel. Finer
 /// levels halve the cells and retry where no single disk covers a cell yet.
 /// With the defaults the radial spectrum is maximal dart throwing's
-/// (docs/wei.md).
+/// (docs/wei.md). From 4 dimensions the phase groups are built on cells of
+/// edge just over r that hold several samples each (2^D groups instead of
+/// 4^D, a conflict test of at most 3^D cells instead of (2 sqrt(D) + 3)^D),
+/// at the same dart rate; D runs to 8, but the open cells of the finer
+/// levels grow about eightfold a dimension (docs/dimensions.md), and a
+/// radius whose open cells would need more than 4 GiB is refused.
 /// Guarantees: all pairs at least `radius` apart; every point in [lo, hi);
 /// same seed, same points for every thread count (each cell's darts come from
 /// (seed, level, cell, pass, window), never from the thread). Not maximal:
 /// small gaps covered only by the union of several disks can remain (see
 /// docs/wei.md for the measured coverage and rho).
-/// Invalid: radius not positive/finite or over the point budget, trials < 1,
+/// Invalid: radius not positive/finite or over the point budget (or over the
+/// memory bound from 4D), trials < 1,
 /// levels outside [1, 10], windows outside [1, 1000], threads < 0.
 template <int D>
 PointSet<D> wei(const WeiParams& params, const Domain<D>& domain, std::uint64_t seed);

@@ -16,7 +16,7 @@ namespace pds::registry_detail {
 // its open sub-cells in 5 dimensions and stops there: past it the sub-cells
 // it cannot prove covered multiply nearly 2^D-fold a level
 // (src/pds/samplers/ebeida.cpp).
-constexpr int kWeiMaxDim = 4;
+constexpr int kWeiMaxDim = 5;
 constexpr int kEbeidaMaxDim = 5;
 
 const Method& dunbar_humphreys_method() {
