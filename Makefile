@@ -80,7 +80,7 @@ SAN_EXCLUDE = consumer_|core_needs|_in_sync|SameDistributionAsTheLiteralMethod|M
 # instrumented); its 5D code runs instrumented in the others (the smaller short
 # periods, inside-the-domain, the sweep).
 SAN_EBEIDA_5D = (SameSeedSameBytesOtherSeedOtherPoints|RadiusHoldsBetweenEveryPairAndMaximalityWhereClaimed)/ebeida_5d|ShortPeriod.ValidSetOrClearRefusal/ebeida_5d_torus_(300|400)r
-# wei from 4D (5 to 7 s each in Release): its 5D and 6D sets, its 5D thread
+# wei from 4D (0.6 to 2.5 s each in Release): its 5D and 6D sets, its 5D thread
 # and saturation tests and its two largest 5D registry cases; its 8D test,
 # the 5D prefix test and the other registry cases in 4D and 5D run the same
 # code instrumented.

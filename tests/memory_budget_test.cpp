@@ -54,5 +54,21 @@ TEST(MemoryBudget, EstimateIsPointsTimesDimensionTimesTheMethodsRatio) {
   EXPECT_THROW(generate("random", r), InvalidArgument);
 }
 
+// A method whose memory grows with the dimension states a ratio per
+// dimension: wei's open cells from 4D (measured, docs/wei.md).
+TEST(MemoryBudget, RatioFollowsTheDimensionWhereTheMethodSaysSo) {
+  const Method& wei = find_method("wei");
+  GenerateRequest r;
+  r.radius = 0.3;
+  for (int dim = 1; dim <= wei.dims.hi; ++dim) {
+    r.dim = dim;
+    std::vector<double> lo, hi;
+    r.bounds(lo, hi);
+    const double points = typical_count(sizing_volume(lo.data(), hi.data(), dim, 0.3), 0.3, dim);
+    const double ratio = dim >= 5 ? 170 : dim >= 4 ? 50 : wei.memory_ratio;
+    EXPECT_DOUBLE_EQ(peak_memory_estimate(wei, r), points * dim * 8 * ratio) << dim;
+  }
+}
+
 }  // namespace
 }  // namespace pds

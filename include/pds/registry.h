@@ -16,6 +16,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "pds/domain.h"
@@ -155,6 +156,9 @@ struct Method {
   /// coordinate), measured at N = 10^6 by scripts/peak_memory.py
   /// (docs/reliability.md) and rounded up: the factor of peak_memory_estimate.
   double memory_ratio = 4;
+  /// Where a dimension needs more: (D, ratio) pairs, ascending in D, each
+  /// taking over memory_ratio from D on (measured in that dimension).
+  std::vector<std::pair<int, double>> memory_ratio_from_dim;
   std::vector<MethodParam> params;
   /// Runs the method on a request that generate() has already validated.
   PointCloud (*run)(const GenerateRequest&) = nullptr;
@@ -191,7 +195,8 @@ ClassCloud generate_classes(const MultiClassParams& params, const GenerateReques
 
 /// The peak memory in bytes a request to `method` is expected to allocate:
 /// its points (the count, or for a radius pds::typical_count, an estimate)
-/// x dim x 8 bytes x the method's memory_ratio. The process
+/// x dim x 8 bytes x the method's memory_ratio (or memory_ratio_from_dim's
+/// for the request's dimension). The process
 /// itself (about 14 MB) is not counted. GenerateRequest::max_memory and
 /// --max-memory refuse by it.
 double peak_memory_estimate(const Method& method, const GenerateRequest& request);

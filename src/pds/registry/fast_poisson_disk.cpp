@@ -71,6 +71,9 @@ const Method& wei_method() {
               {3, false, 0.08, 0.82, 0.87},
               {3, true, 0.08, 0.78, 0.83}},
       .memory_ratio = 2.5,
+      // From 4D the open parts of the finer levels dominate: 53 MB for 35,147
+      // points in 4D, 680 MB for 103,730 in 5D (unit torus, docs/wei.md).
+      .memory_ratio_from_dim = {{4, 50}, {5, 170}},
       .params =
           {{"k", double(WeiParams{}.trials), 1, 1000, true,
             "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},

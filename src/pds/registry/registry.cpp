@@ -259,7 +259,10 @@ double peak_memory_estimate(const Method& method, const GenerateRequest& request
     points = request.count ? std::min(points, typical) : typical;  // a count stops the run
   }
   points += static_cast<double>(request.constraints.fixed.size());
-  return points * request.dim * static_cast<double>(sizeof(double)) * method.memory_ratio;
+  double ratio = method.memory_ratio;
+  for (const auto& [dim, from_dim] : method.memory_ratio_from_dim)
+    if (request.dim >= dim) ratio = from_dim;
+  return points * request.dim * static_cast<double>(sizeof(double)) * ratio;
 }
 
 PointCloud generate(const std::string& method, const GenerateRequest& request) {
