@@ -747,10 +747,12 @@ class WeiUnitSampler : public WeiPasses<WeiUnitSampler<D>> {
         r2_(params.radius * params.radius),
         cover2_(params.radius * params.radius * (1.0 - 1e-9)),
         samples_(unit_grid(domain, params.radius)) {
-    // The open parts dominate the memory: measured at level 1 (unit torus,
-    // 2026-12-03) about 1.5 KB a sample in 4D, 6.5 KB in 5D, 50 KB in 6D and
-    // 260 KB in 7D, growing about eightfold a dimension.
-    const double bytes = typical_count(sizing_volume(domain, r_), r_, D) * 2048.0 * std::pow(8.0, D - 4);
+    // The open parts dominate the memory: measured at level 1 (2026-12-03)
+    // about 1.5 KB a sample in 4D, 6.5 KB in 5D, 50 KB in 6D and 260 KB in 7D
+    // (unit torus), 110 KB in 8D (a box of edge 0.5, r = 0.3): 2 KB in 4D,
+    // eight times more a dimension up to 7D.
+    const double bytes =
+        typical_count(sizing_volume(domain, r_), r_, D) * 2048.0 * std::pow(8.0, std::min(D, 7) - 4);
     if (bytes > kMaxPartBytes)
       throw InvalidArgument("wei: radius " + detail::format_number(r_) + " in " + std::to_string(D) +
                             " dimensions would need about " + detail::format_number(bytes / 0x1.0p30) +
