@@ -718,8 +718,9 @@ class WeiSampler : public WeiPasses<WeiSampler<D>> {
 // Measured (unit torus, two threads, 2026-12-03): in 4D, r = 0.07, 35,147
 // points in 4.9 s and 53 MB, against 32,744 in 25 s and 30 MB with the
 // paper's grid (rho 0.806 against 0.792); in 5D 10^5 points in 108 s and
-// 680 MB. The open parts grow about eightfold a dimension (level 1: 1.5 KB
-// a sample in 4D, 50 KB in 6D, 260 KB in 7D, where 489 points take 42 s), so
+// 680 MB. The open parts, most of the memory, grow about eightfold a
+// dimension (peak memory 1.5 KB a sample in 4D, 50 KB in 6D, 260 KB in 7D,
+// where 489 points take 42 s on two threads), so
 // the registry stops at 5 dimensions; the template takes 6 to 8 for callers
 // who can wait.
 template <int D>
@@ -747,10 +748,11 @@ class WeiUnitSampler : public WeiPasses<WeiUnitSampler<D>> {
         r2_(params.radius * params.radius),
         cover2_(params.radius * params.radius * (1.0 - 1e-9)),
         samples_(unit_grid(domain, params.radius)) {
-    // The open parts dominate the memory: measured at level 1 (2026-12-03)
-    // about 1.5 KB a sample in 4D, 6.5 KB in 5D, 50 KB in 6D and 260 KB in 7D
-    // (unit torus), 110 KB in 8D (a box of edge 0.5, r = 0.3): 2 KB in 4D,
-    // eight times more a dimension up to 7D.
+    // The open parts dominate the memory. Measured (2026-12-03): the run's
+    // peak is about 1.5 KB a sample in 4D, 6.5 KB in 5D, 50 KB in 6D and
+    // 260 KB in 7D (unit torus); in 8D the level-1 open cells alone came to
+    // 110 KB a sample (a box of edge 0.5, r = 0.3). So: 2 KB in 4D, eight
+    // times more a dimension up to 7D.
     const double bytes =
         typical_count(sizing_volume(domain, r_), r_, D) * 2048.0 * std::pow(8.0, std::min(D, 7) - 4);
     if (bytes > kMaxPartBytes)
