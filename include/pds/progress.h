@@ -54,7 +54,7 @@ class ProgressReporter {
   /// by a thousandth of the total since the last report, or every 2^16
   /// calls, so that a run whose count stalls still hears a cancellation.
   void update(double done) {
-    if (!progress_) return;
+    if (!progress_ || (reported_ && done_ >= total_)) return;  // the total is reported once
     if (done < done_) done = done_;
     if (done > total_) done = total_;
     if (reported_ && done < next_ && done < total_ && (++calls_ & 0xffff) != 0) return;
@@ -67,6 +67,18 @@ class ProgressReporter {
   }
 
   double total() const { return total_; }
+
+  /// The stretch [from, to] of this run's total as a Progress of its own,
+  /// for a part that reports in its own unit (one measure of a set): its
+  /// (done, total) arrives here as from + (to - from) done / total. Empty
+  /// when this run has no callback; valid while this reporter lives.
+  Progress span(double from, double to) {
+    if (!progress_) return {};
+    return {[this, from, to](double done, double total) {
+      update(from + (to - from) * (total > 0 ? done / total : 0.0));
+      return true;  // a stop was already thrown by update()
+    }};
+  }
 
  private:
   void send(double done) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,14 @@ namespace {
 struct Report {
   double done, total;
 };
+
+// A Progress that records every report and never stops the run.
+Progress recorder(std::vector<Report>& reports) {
+  return {[&reports](double done, double total) {
+    reports.push_back({done, total});
+    return true;
+  }};
+}
 
 // The methods that report, each on a request of a fraction of a second.
 GenerateRequest request_for(const std::string& method) {
@@ -197,6 +206,31 @@ TEST(ProgressOfAnalysis, PastEightDimensionsMeasureByMeasure) {
             with.mixture_discrepancy);
   options.progress.report = [](double done, double) { return done < 3; };
   EXPECT_THROW(analyze(std::span<const PointCloud>(sets), lo, hi, false, options), Cancelled);
+}
+
+// 1,200 points in 12D: each discrepancy is two blocks of rows, and the
+// first block is heard inside its measure's unit.
+TEST(ProgressOfAnalysis, InsideOneDiscrepancy) {
+  GenerateRequest r;
+  r.count = 1200;
+  r.dim = 12;
+  std::vector<Report> reports;
+  AnalysisOptions options;
+  options.progress = recorder(reports);
+  const std::vector<PointCloud> sets = {generate("halton", r)};
+  analyze(std::span<const PointCloud>(sets), std::vector<double>(12, 0.0), std::vector<double>(12, 1.0), false,
+          options);
+  int inside = 0;
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    if (i > 0) EXPECT_GT(reports[i].done, reports[i - 1].done);
+    inside += reports[i].done != std::floor(reports[i].done);
+  }
+  EXPECT_EQ(inside, 4);  // one a discrepancy
+  EXPECT_EQ(reports.back().done, 5.0);
+  options.progress.report = [](double done, double) { return done < 2.5; };
+  EXPECT_THROW(analyze(std::span<const PointCloud>(sets), std::vector<double>(12, 0.0), std::vector<double>(12, 1.0),
+                       false, options),
+               Cancelled);
 }
 
 TEST(ProgressOfRender, BlocksInRoundsTheSameImageAndCancellation) {

@@ -46,6 +46,7 @@
 
 #include "pds/domain.h"
 #include "pds/point.h"
+#include "pds/progress.h"
 
 namespace pds {
 
@@ -69,12 +70,15 @@ DiscrepancyMethod parse_discrepancy_method(std::string_view name);
 /// cube [0, 1]^dim, any dim >= 1 (see above: squared for CD, WD, MD; T for
 /// L2-star). Runs on several threads; the same double for any thread count.
 /// Throws InvalidArgument for no points, more than kMaxL2StarPoints, a
-/// dimension below 1 or a coordinate outside [0, 1] (or NaN).
-double discrepancy(const PointCloud& unit_points, DiscrepancyMethod method);
+/// dimension below 1 or a coordinate outside [0, 1] (or NaN). `progress`
+/// (optional) hears the rows of the O(N^2 D) double sum done, out of N, from
+/// the calling thread, about every 2^20 pairs; returning false stops the run
+/// with pds::Cancelled. The result is the same double with or without it.
+double discrepancy(const PointCloud& unit_points, DiscrepancyMethod method, const Progress& progress = {});
 
 /// The same after scaling the box [lo, hi] (closed) onto the unit cube.
 double discrepancy(const PointCloud& points, std::span<const double> lo, std::span<const double> hi,
-                   DiscrepancyMethod method);
+                   DiscrepancyMethod method, const Progress& progress = {});
 
 /// True when star_discrepancy accepts n points in dimension dim (n >= 1).
 bool star_discrepancy_feasible(std::size_t n, int dim);
@@ -82,8 +86,9 @@ bool star_discrepancy_feasible(std::size_t n, int dim);
 /// Warnock's L2-star discrepancy T (not squared), the same double as
 /// discrepancy(u, DiscrepancyMethod::L2Star) on the scaled points u. Throws InvalidArgument for
 /// an empty set, more than kMaxL2StarPoints points, or a point outside.
+/// `progress` as for discrepancy().
 template <int D>
-double l2_star_discrepancy(const PointSet<D>& points, const Domain<D>& domain);
+double l2_star_discrepancy(const PointSet<D>& points, const Domain<D>& domain, const Progress& progress = {});
 
 /// The exact star discrepancy D*. Throws InvalidArgument for an empty set, a
 /// set beyond kMaxStarDiscrepancyWork, or a point outside the domain.

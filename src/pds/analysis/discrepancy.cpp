@@ -53,9 +53,10 @@ void require_discrepancy_size(std::size_t n, const char* what) {
 // Rows per block: about 2^20 terms (8 MiB) at a time.
 std::size_t block_rows(std::size_t n) { return std::max<std::size_t>(1, (std::size_t{1} << 20) / n); }
 
-// sum_i sum_j term(i, j) in row-major order, one running sum.
+// sum_i sum_j term(i, j) in row-major order, one running sum. Reports the
+// rows done after each block.
 template <class Term>
-double pair_sum_running(std::size_t n, const Term& term) {
+double pair_sum_running(std::size_t n, const Term& term, ProgressReporter& progress) {
   const std::size_t rows = block_rows(n);
   std::vector<double> terms(std::min(rows, n) * n);
   double sum = 0.0;
@@ -69,27 +70,36 @@ double pair_sum_running(std::size_t n, const Term& term) {
     });
     const std::size_t count = (last - first) * n;
     for (std::size_t k = 0; k < count; ++k) sum += terms[k];
+    progress.update(static_cast<double>(last));
   }
   return sum;
 }
 
 // sum_i (sum_j term(i, j)): each row summed alone, the rows added in order.
+// Blocks of rows as above, only so that progress is heard between them.
 template <class Term>
-double pair_sum_by_rows(std::size_t n, const Term& term) {
+double pair_sum_by_rows(std::size_t n, const Term& term, ProgressReporter& progress) {
   std::vector<double> row_sums(n);
-  parallel_for(0, n, 16, 0, [&](std::size_t b, std::size_t e) {
-    for (std::size_t i = b; i != e; ++i) {
-      double row = 0.0;
-      for (std::size_t j = 0; j < n; ++j) row += term(i, j);
-      row_sums[i] = row;
-    }
-  });
+  const std::size_t rows = block_rows(n);
+  for (std::size_t first = 0; first < n; first += rows) {
+    const std::size_t last = std::min(n, first + rows);
+    parallel_for(first, last, 16, 0, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i != e; ++i) {
+        double row = 0.0;
+        for (std::size_t j = 0; j < n; ++j) row += term(i, j);
+        row_sums[i] = row;
+      }
+    });
+    progress.update(static_cast<double>(last));
+  }
   double sum = 0.0;
   for (const double r : row_sums) sum += r;
   return sum;
 }
 
-double unit_cube_discrepancy(const PointCloud& points, DiscrepancyMethod method) {
+// The discrepancy (squared for CD, WD, MD) of points in the unit cube;
+// `progress` hears the rows of the double sum done.
+double unit_cube_discrepancy(const PointCloud& points, DiscrepancyMethod method, ProgressReporter& progress) {
   const std::size_t n = points.size();
   const std::size_t d = static_cast<std::size_t>(points.dim);
   const double* x = points.coords.data();
@@ -114,7 +124,7 @@ double unit_cube_discrepancy(const PointCloud& points, DiscrepancyMethod method)
         double prod = 1.0;
         for (std::size_t k = 0; k < d; ++k) prod *= 1.0 - std::max(x[i * d + k], x[j * d + k]);
         return prod;
-      });
+      }, progress);
       const double t2 = std::pow(3.0, -dd) - 1.0 / nd * std::pow(2.0, 1.0 - dd) * single + 1.0 / (nd * nd) * pair;
       return std::sqrt(std::max(0.0, t2));
     }
@@ -133,7 +143,7 @@ double unit_cube_discrepancy(const PointCloud& points, DiscrepancyMethod method)
         for (std::size_t k = 0; k < d; ++k)
           prod *= 1.0 + 0.5 * h[i * d + k] + 0.5 * h[j * d + k] - 0.5 * std::fabs(x[i * d + k] - x[j * d + k]);
         return prod;
-      });
+      }, progress);
       return std::pow(13.0 / 12.0, dd) - 2.0 / nd * single + 1.0 / (nd * nd) * pair;
     }
     case DiscrepancyMethod::WrapAround: {
@@ -144,7 +154,7 @@ double unit_cube_discrepancy(const PointCloud& points, DiscrepancyMethod method)
           prod *= 1.5 - t + t * t;
         }
         return prod;
-      });
+      }, progress);
       return -std::pow(4.0 / 3.0, dd) + 1.0 / (nd * nd) * pair;
     }
     case DiscrepancyMethod::Mixture: {
@@ -164,11 +174,18 @@ double unit_cube_discrepancy(const PointCloud& points, DiscrepancyMethod method)
           prod *= 15.0 / 8.0 - 0.25 * h[i * d + k] - 0.25 * h[j * d + k] - 0.75 * t + 0.5 * (t * t);
         }
         return prod;
-      });
+      }, progress);
       return std::pow(19.0 / 12.0, dd) - 2.0 / nd * single + 1.0 / (nd * nd) * pair;
     }
   }
   throw InvalidArgument("discrepancy: unknown method");
+}
+
+double unit_cube_discrepancy(const PointCloud& points, DiscrepancyMethod method, const Progress& progress) {
+  ProgressReporter reporter(progress, static_cast<double>(points.size()));
+  const double value = unit_cube_discrepancy(points, method, reporter);
+  reporter.finish();
+  return value;
 }
 
 }  // namespace
@@ -194,7 +211,7 @@ DiscrepancyMethod parse_discrepancy_method(std::string_view name) {
                         std::string(name) + "'");
 }
 
-double discrepancy(const PointCloud& points, DiscrepancyMethod method) {
+double discrepancy(const PointCloud& points, DiscrepancyMethod method, const Progress& progress) {
   if (points.dim < 1)
     throw InvalidArgument("discrepancy: dimension " + std::to_string(points.dim) + " is not positive");
   if (points.size() == 0) throw InvalidArgument("discrepancy: the point set is empty");
@@ -206,11 +223,11 @@ double discrepancy(const PointCloud& points, DiscrepancyMethod method) {
                             " lies outside the unit cube [0, 1]^" + std::to_string(points.dim) + " (coordinate " +
                             std::to_string(k % static_cast<std::size_t>(points.dim)) + ")");
   }
-  return unit_cube_discrepancy(points, method);
+  return unit_cube_discrepancy(points, method, progress);
 }
 
 double discrepancy(const PointCloud& points, std::span<const double> lo, std::span<const double> hi,
-                   DiscrepancyMethod method) {
+                   DiscrepancyMethod method, const Progress& progress) {
   const std::size_t d = static_cast<std::size_t>(std::max(points.dim, 0));
   if (lo.size() != d || hi.size() != d)
     throw InvalidArgument("discrepancy: the bounds have " + std::to_string(lo.size()) + " and " +
@@ -225,7 +242,7 @@ double discrepancy(const PointCloud& points, std::span<const double> lo, std::sp
                             std::to_string(a) + ")");
     u.coords[k] = (v - lo[a]) / (hi[a] - lo[a]);
   }
-  return discrepancy(u, method);
+  return discrepancy(u, method, progress);
 }
 
 bool star_discrepancy_feasible(std::size_t n, int dim) {
@@ -235,13 +252,13 @@ bool star_discrepancy_feasible(std::size_t n, int dim) {
 }
 
 template <int D>
-double l2_star_discrepancy(const PointSet<D>& points, const Domain<D>& domain) {
+double l2_star_discrepancy(const PointSet<D>& points, const Domain<D>& domain, const Progress& progress) {
   require_discrepancy_size(points.size(), "L2-star discrepancy");
   const auto u = to_unit_cube(points, domain, "L2-star discrepancy");
   PointCloud cloud{D, {}};
   cloud.coords.reserve(u.size() * D);
   for (const auto& p : u) cloud.coords.insert(cloud.coords.end(), p.begin(), p.end());
-  return unit_cube_discrepancy(cloud, DiscrepancyMethod::L2Star);
+  return unit_cube_discrepancy(cloud, DiscrepancyMethod::L2Star, progress);
 }
 
 template <int D>
@@ -319,8 +336,8 @@ double star_discrepancy(const PointSet<D>& points, const Domain<D>& domain) {
   return best;
 }
 
-#define PDS_INSTANTIATE(D)                                                       \
-  template double l2_star_discrepancy<D>(const PointSet<D>&, const Domain<D>&); \
+#define PDS_INSTANTIATE(D)                                                                         \
+  template double l2_star_discrepancy<D>(const PointSet<D>&, const Domain<D>&, const Progress&); \
   template double star_discrepancy<D>(const PointSet<D>&, const Domain<D>&);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE

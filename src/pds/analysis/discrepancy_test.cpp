@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "pds/error.h"
 #include "pds/parallel.h"
+#include "pds/progress.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 
@@ -274,6 +277,29 @@ TEST(Discrepancy, RunTimeNamesAndBadInput) {
   const std::vector<double> lo{0, 0}, hi{2, 2};
   EXPECT_THROW(discrepancy(PointCloud{2, {0.5, 2.5}}, lo, hi, DiscrepancyMethod::Centered), InvalidArgument);
   EXPECT_THROW(discrepancy(PointCloud{3, {0.5, 0.5, 0.5}}, lo, hi, DiscrepancyMethod::Centered), InvalidArgument);
+}
+
+// 2,000 points: four blocks of rows, each heard; the same double with and
+// without a callback, and a stop between blocks cancels.
+TEST(Discrepancy, ReportsRowsDoneWithinOneMeasureAndCanBeStopped) {
+  const PointCloud x = kronecker(2000, 10);
+  for (const DiscrepancyMethod method : kDiscrepancyMethods) {
+    std::vector<std::pair<double, double>> reports;
+    const Progress progress{[&](double done, double total) {
+      reports.emplace_back(done, total);
+      return true;
+    }};
+    const double with = discrepancy(x, method, progress);
+    EXPECT_EQ(with, discrepancy(x, method)) << discrepancy_method_name(method);
+    ASSERT_EQ(reports.size(), 5u) << discrepancy_method_name(method);  // 0, then after each block
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+      EXPECT_EQ(reports[i].second, 2000.0);
+      if (i > 0) EXPECT_GT(reports[i].first, reports[i - 1].first);
+    }
+    EXPECT_EQ(reports.back().first, 2000.0);
+    const Progress stop{[](double done, double) { return done < 1000; }};
+    EXPECT_THROW(discrepancy(x, method, stop), Cancelled) << discrepancy_method_name(method);
+  }
 }
 
 TEST(Discrepancy, TypedInstancesUpToEightDimensions) {

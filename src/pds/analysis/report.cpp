@@ -135,25 +135,29 @@ AnalysisReport analyze(std::span<const PointSet<D>> sets, const Domain<D>& domai
   ProgressReporter progress(options.progress, m + 2);
   for (std::size_t k = 0; k < sets.size(); ++k) {
     // A set's unit in six steps, one a measure: in many dimensions each
-    // discrepancy is O(N^2 D) and can take a second or more.
+    // discrepancy is O(N^2 D) and can take a second or more, so each also
+    // reports within its step.
     const auto step = [&](int done) { progress.update(static_cast<double>(k) + done / 6.0); };
+    const auto within = [&](int done) {
+      return progress.span(static_cast<double>(k) + done / 6.0, static_cast<double>(k) + (done + 1) / 6.0);
+    };
     step(0);
     const PointSet<D>& s = sets[k];
     const Spacing sp = spacing(s, domain);
     rho_min += sp.rho_min;
     rho_mean += sp.rho_mean;
     step(1);
-    if (l2_ok) l2 += l2_star_discrepancy(s, domain);
+    if (l2_ok) l2 += l2_star_discrepancy(s, domain, within(1));
     step(2);
     if (star_ok) star += star_discrepancy(s, domain);
     step(3);
     if (hickernell_ok) {
       const PointCloud cloud = PointCloud::from(s);
-      hickernell[0] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Centered);
+      hickernell[0] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Centered, within(3));
       step(4);
-      hickernell[1] += discrepancy(cloud, lo, hi, DiscrepancyMethod::WrapAround);
+      hickernell[1] += discrepancy(cloud, lo, hi, DiscrepancyMethod::WrapAround, within(4));
       step(5);
-      hickernell[2] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Mixture);
+      hickernell[2] += discrepancy(cloud, lo, hi, DiscrepancyMethod::Mixture, within(5));
     }
   }
   if (smallest > 1) {
@@ -267,14 +271,17 @@ AnalysisReport analyze(std::span<const PointCloud> sets, std::span<const double>
   for (std::size_t k = 0; k < sets.size(); ++k) {
     const PointCloud& s = sets[k];
     const auto step = [&](int done) { progress.update(1.0 + 4.0 * static_cast<double>(k) + done); };
-    if (l2_ok) sums[0] += discrepancy(s, lo, hi, DiscrepancyMethod::L2Star);
+    const auto within = [&](int done) {
+      return progress.span(1.0 + 4.0 * static_cast<double>(k) + done, 2.0 + 4.0 * static_cast<double>(k) + done);
+    };
+    if (l2_ok) sums[0] += discrepancy(s, lo, hi, DiscrepancyMethod::L2Star, within(0));
     step(1);
     if (hickernell_ok) {
-      sums[1] += discrepancy(s, lo, hi, DiscrepancyMethod::Centered);
+      sums[1] += discrepancy(s, lo, hi, DiscrepancyMethod::Centered, within(1));
       step(2);
-      sums[2] += discrepancy(s, lo, hi, DiscrepancyMethod::WrapAround);
+      sums[2] += discrepancy(s, lo, hi, DiscrepancyMethod::WrapAround, within(2));
       step(3);
-      sums[3] += discrepancy(s, lo, hi, DiscrepancyMethod::Mixture);
+      sums[3] += discrepancy(s, lo, hi, DiscrepancyMethod::Mixture, within(3));
     }
     step(4);
   }

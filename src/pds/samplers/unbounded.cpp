@@ -89,10 +89,13 @@ struct CellHash {
   }
 };
 
+constexpr std::uint8_t kUndecided = 0, kKept = 1, kRejected = 2;
+
 template <int D>
 struct Dart {
   Point<D> p;
   double t;
+  std::uint8_t status = kUndecided;  // kUndecided, kKept or kRejected
 };
 
 /// A sub-cell of a cell at refinement level k: its index along each axis, in
@@ -119,15 +122,34 @@ constexpr std::int8_t kClosed = INT8_MAX;  // CellState::done: no sub-cell open,
 template <int D>
 struct CellState {
   std::vector<Dart<D>> darts;        // the level-0 darts in time order, then each node's, each in time order
-  std::vector<std::uint8_t> status;  // per dart: kUndecided, kKept or kRejected
   Node<D> root;                      // the cell at level 0; its darts are darts[0, root.darts)
   std::vector<Node<D>> nodes;        // the open sub-cells found so far (children of one node contiguous)
-  std::vector<std::uint32_t> kept;  // the darts decided kept so far
+  std::vector<std::uint32_t> kept;  // the darts decided kept after the first (CellSummary::kept)
   std::uint32_t swept = 0;          // level-0 darts [0, swept) decided by the sweep
   std::int8_t done = -1;            // the darts of levels 0..done are all decided (their nodes all exist)
-  bool generated = false;
 
   Node<D>& node(std::uint32_t i) { return i == kRoot ? root : nodes[i]; }
+};
+
+/// What the common questions read of a cell, in a small record of its own
+/// (an array of them per region, next to the CellStates): whether a cell's
+/// darts before a time are all decided, and then its kept darts. On the
+/// plane a cell (edge r/sqrt(D), diagonal r) holds at most one kept dart, so
+/// the first is stored here; any more (a torus's cells are up to 1.25 times
+/// wider) are read from CellState::kept.
+template <int D>
+struct CellSummary {
+  double decided_until = 0.0;  // every dart of the cell before this time is decided
+  Dart<D> kept;                // the first kept dart, when kept_count > 0
+  std::uint32_t kept_count = 0;
+  bool generated = false;
+};
+
+/// A cell's summary and state, where the memo keeps them.
+template <int D>
+struct CellRef {
+  CellSummary<D>* summary;
+  CellState<D>* state;
 };
 
 // Cells within this many cells of the region live in an array (the reach
@@ -135,7 +157,6 @@ struct CellState {
 // ones in a hash map.
 constexpr std::int64_t kDenseMargin = 12;
 
-constexpr std::uint8_t kUndecided = 0, kKept = 1, kRejected = 2;
 
 // Expected darts of an open sub-cell at each refinement level (as ebeida's
 // kLevelTime; only the work depends on it, never the law of the samples).
@@ -217,6 +238,17 @@ class Settler {
       size *= static_cast<std::size_t>(dense_n_[a]);
     }
     dense_.resize(size);
+    dense_summary_.resize(size);
+    std::int64_t stride = 1;
+    for (int a = 0; a < D; ++a) {
+      dense_stride_[a] = stride;
+      stride *= dense_n_[a];
+    }
+    for (const Cell<D>& o : offsets_) {
+      std::int64_t step = 0;
+      for (int a = 0; a < D; ++a) step += o[a] * dense_stride_[a];
+      offset_steps_.push_back(step);
+    }
   }
 
   /// The cell's own coordinates: on a torus, wrapped into [0, period).
@@ -226,8 +258,9 @@ class Settler {
     return c;
   }
 
-  /// The state of a cell given by its own (canonical) coordinates.
-  CellState<D>& state(const Cell<D>& c) {
+  /// The summary and state of a cell given by its own (canonical)
+  /// coordinates; its darts are drawn on first use.
+  CellRef<D> cell(const Cell<D>& c) {
     std::size_t index = 0;
     bool inside = true;
     for (int a = D - 1; a >= 0; --a) {
@@ -235,32 +268,51 @@ class Settler {
       inside = inside && i >= 0 && i < dense_n_[a];
       index = index * static_cast<std::size_t>(dense_n_[a]) + static_cast<std::size_t>(i);
     }
-    CellState<D>& s = inside ? dense_[index] : sparse_[c];
-    if (!s.generated) {
-      generate(c, s);
-      s.generated = true;
+    if (inside) return dense_cell(index, c);
+    SparseCell& sparse = sparse_[c];
+    return generated({&sparse.summary, &sparse.state}, c);
+  }
+  CellState<D>& state(const Cell<D>& c) { return *cell(c).state; }
+
+ private:
+  CellRef<D> dense_cell(std::size_t index, const Cell<D>& c) {
+    return generated({&dense_summary_[index], &dense_[index]}, c);
+  }
+
+  /// The cell, its darts drawn if this is its first use.
+  CellRef<D> generated(CellRef<D> ref, const Cell<D>& c) {
+    if (!ref.summary->generated) {
+      generate(c, *ref.state);
+      ref.summary->generated = true;
+      ref.summary->decided_until = decided_until(*ref.state);
       ++cells_touched_;
       for (int a = 0; a < D; ++a) reach_lo_[a] = std::min(reach_lo_[a], c[a]), reach_hi_[a] = std::max(reach_hi_[a], c[a]);
     }
-    return s;
+    return ref;
   }
+
+ public:
 
   /// Decides every level-0 dart of cell c before time t.
   void settle_until(Cell<D> c, double t) {
     c = canonical(c);
-    CellState<D>& s = state(c);
+    const CellRef<D> ref = cell(c);
+    CellState<D>& s = *ref.state;
     while (s.swept < s.root.darts && s.darts[s.swept].t < t) {
-      decide(c, s, s.swept);
+      decide(c, ref, s.swept);
       ++s.swept;
+      ref.summary->decided_until = decided_until(s);
     }
     if (s.swept == s.root.darts && s.done < 0) s.done = 0;
+    ref.summary->decided_until = decided_until(s);
   }
 
   /// Refinement level k of cell c (canonical): expands its nodes of level
   /// k - 1 and decides the darts of those of level k. Returns whether c has
   /// an open sub-cell at level k (darts may still come).
   bool settle_level(const Cell<D>& c, int k) {
-    CellState<D>& s = state(c);
+    const CellRef<D> ref = cell(c);
+    CellState<D>& s = *ref.state;
     bool open = false;
     visit(c, s, kRoot, k, [&](std::uint32_t n) {
       if (s.node(n).level != k - 1) return;
@@ -269,8 +321,9 @@ class Settler {
     });
     for (std::size_t n = 0; n < s.nodes.size(); ++n)
       if (s.nodes[n].level == k)
-        for (std::uint32_t i = 0; i < s.nodes[n].darts; ++i) decide(c, s, s.nodes[n].first_dart + i);
+        for (std::uint32_t i = 0; i < s.nodes[n].darts; ++i) decide(c, ref, s.nodes[n].first_dart + i);
     s.done = open ? static_cast<std::int8_t>(k) : kClosed;
+    ref.summary->decided_until = decided_until(s);
     return open;
   }
 
@@ -291,7 +344,6 @@ class Settler {
 
   void generate(const Cell<D>& c, CellState<D>& s) const {
     stream(cell_key(c), c, 0, Sub<D>{}, 0.0, end_time_, s.darts);
-    s.status.assign(s.darts.size(), kUndecided);
     s.root.darts = static_cast<std::uint32_t>(s.darts.size());
   }
 
@@ -383,22 +435,42 @@ class Settler {
   /// calls f(m, state).
   template <typename F>
   void for_each_neighbour(const Cell<D>& c, const Box& b, F&& f) {
-    for (const Cell<D>& o : offsets_) {
+    // The squared gap from b to the cells of each offset along each axis,
+    // unwrapped (the same frame as b, widened as box() widens): offsets
+    // -2..2 of the 5^D block.
+    std::array<std::array<double, 5>, D> gap2;
+    // The block lies in the dense memo (and, on the plane, needs no wrap):
+    // its cells are at fixed steps from c's.
+    bool dense = torus_ == nullptr;
+    std::size_t index = 0;
+    for (int a = D - 1; a >= 0; --a) {
+      for (int o = -2; o <= 2; ++o) {
+        const double mid = origin(a) + (static_cast<double>(c[a] + o) + 0.5) * edges_[a];
+        const double g = std::abs(mid - b.mid[a]) - (0.5 + 0x1.0p-10) * edges_[a] - b.half[a];
+        gap2[a][o + 2] = g > 0.0 ? g * g : 0.0;
+      }
+      const std::int64_t i = c[a] - dense_lo_[a];
+      dense = dense && i >= 2 && i + 2 < dense_n_[a];
+      index = index * static_cast<std::size_t>(dense_n_[a]) + static_cast<std::size_t>(i);
+    }
+    for (std::size_t n = 0; n < offsets_.size(); ++n) {
+      const Cell<D>& o = offsets_[n];
+      double g2 = 0.0;  // summed in axis order, as the per-cell formula (adding 0 is exact)
+      for (int a = 0; a < D; ++a) g2 += gap2[a][o[a] + 2];
+      if (g2 > r2_ * (1.0 + 1e-9)) continue;
       Cell<D> m;
       for (int a = 0; a < D; ++a) m[a] = c[a] + o[a];
-      double g2 = 0.0;  // from b to cell m, unwrapped: the same frame as b, widened as box() widens
-      for (int a = 0; a < D; ++a) {
-        const double mid = origin(a) + (static_cast<double>(m[a]) + 0.5) * edges_[a];
-        const double g = std::abs(mid - b.mid[a]) - (0.5 + 0x1.0p-10) * edges_[a] - b.half[a];
-        if (g > 0.0) g2 += g * g;
+      if (dense) {
+        f(m, dense_cell(index + static_cast<std::size_t>(offset_steps_[n]), m));
+      } else {
+        m = canonical(m);
+        f(m, cell(m));
       }
-      if (g2 > r2_ * (1.0 + 1e-9)) continue;
-      m = canonical(m);
-      f(m, state(m));
     }
   }
 
-  /// Every dart of the cell before this time is decided.
+  /// Every dart of the cell before this time is decided (kept up to date in
+  /// CellSummary::decided_until, which the questions read).
   double decided_until(const CellState<D>& s) const {
     if (s.done == kClosed) return INFINITY;
     if (s.done >= 0) return level_end_[static_cast<std::size_t>(s.done)];
@@ -434,17 +506,21 @@ class Settler {
     Scratch& scratch = scratch_at(depth_);
     std::vector<Point<D>>& kept = scratch.kept;
     kept.clear();
-    for_each_neighbour(c, pb, [&](const Cell<D>& m, CellState<D>& ms) {
-      if (decided_until(ms) >= start) {  // the usual case inside a region: a short list
-        for (const std::uint32_t j : ms.kept)
-          if (ms.darts[j].t < start && near(pb, ms.darts[j].p, nullptr)) kept.push_back(ms.darts[j].p);
+    for_each_neighbour(c, pb, [&](const Cell<D>& m, const CellRef<D>& mref) {
+      const CellSummary<D>& sum = *mref.summary;
+      if (sum.decided_until >= start) {  // the usual case inside a region: its kept dart
+        for_each_kept(mref, [&](const Dart<D>& q) {
+          if (q.t < start && near(pb, q.p, nullptr)) kept.push_back(q.p);
+          return true;
+        });
         return;
       }
+      CellState<D>& ms = *mref.state;
       visit(m, ms, kRoot, k, [&](std::uint32_t i) {
         const std::uint32_t first = ms.node(i).first_dart, count = ms.node(i).darts;
         for (std::uint32_t j = first; j < first + count; ++j) {
           if (!(ms.darts[j].t < start) || !near(pb, ms.darts[j].p, nullptr)) continue;
-          if (decide(m, ms, j)) kept.push_back(ms.darts[j].p);
+          if (decide(m, mref, j)) kept.push_back(ms.darts[j].p);
         }
       }, &pb);
     });
@@ -500,7 +576,6 @@ class Settler {
       s.nodes.push_back(child);
     }
     s.darts.insert(s.darts.end(), darts.begin(), darts.end());
-    s.status.resize(s.darts.size(), kUndecided);
     --depth_;
   }
 
@@ -509,8 +584,9 @@ class Settler {
   /// settles it, and an early dart has few darts before it to depend on, so
   /// the recursion stays near the dart (the causal cone of dart throwing,
   /// explored lazily; docs/unbounded.md measures its reach).
-  bool decide(const Cell<D>& c, CellState<D>& s, std::uint32_t j) {
-    if (s.status[j] != kUndecided) return s.status[j] == kKept;
+  bool decide(const Cell<D>& c, const CellRef<D>& ref, std::uint32_t j) {
+    CellState<D>& s = *ref.state;
+    if (s.darts[j].status != kUndecided) return s.darts[j].status == kKept;
     if (++depth_ > kMaxUnboundedDepth)
       throw Failure("unbounded: a chain of dependent darts is deeper than " + std::to_string(kMaxUnboundedDepth) +
                     " (report this with the seed and radius)");
@@ -524,41 +600,40 @@ class Settler {
     Box point;
     point.mid = d.p;
     point.half.fill(0.0);
-    for_each_neighbour(c, point, [&](const Cell<D>& m, CellState<D>& ms) {
+    for_each_neighbour(c, point, [&](const Cell<D>& m, const CellRef<D>& mref) {
       if (rejected) return;
-      if (decided_until(ms) > d.t) {  // all of m's darts before d are decided: only its kept ones matter
-        for (const std::uint32_t k : ms.kept) {
-          if (!earlier<D>(ms.darts[k], m, d, c)) continue;
+      if (mref.summary->decided_until > d.t) {  // all of m's darts before d are decided: only its kept ones matter
+        for_each_kept(mref, [&](const Dart<D>& q) {
+          if (!earlier<D>(q, m, d, c)) return true;
           double dist2 = 0.0;
           for (int a = 0; a < D; ++a) {
-            const double e = delta(d.p[a], ms.darts[k].p[a], a);
+            const double e = delta(d.p[a], q.p[a], a);
             dist2 += e * e;
           }
-          if (dist2 < r2_) {
-            rejected = true;
-            return;
-          }
-        }
+          rejected = dist2 < r2_;
+          return !rejected;
+        });
         return;
       }
+      CellState<D>& ms = *mref.state;
       // The nodes of m up to d's level near d; expanding them may decide
       // earlier darts (of lower levels), never d.
       visit(m, ms, kRoot, level + 1, [&](std::uint32_t i) {
         if (rejected) return;
         const std::uint32_t first = ms.node(i).first_dart, count = ms.node(i).darts;
         for (std::uint32_t k = first; k < first + count && ms.darts[k].t <= d.t; ++k) {
-          if (ms.status[k] == kRejected || !earlier<D>(ms.darts[k], m, d, c)) continue;
+          if (ms.darts[k].status == kRejected || !earlier<D>(ms.darts[k], m, d, c)) continue;
           double dist2 = 0.0;
           for (int a = 0; a < D; ++a) {
             const double e = delta(d.p[a], ms.darts[k].p[a], a);
             dist2 += e * e;
           }
           if (!(dist2 < r2_)) continue;
-          if (ms.status[k] == kKept) {  // already known: rejected at once
+          if (ms.darts[k].status == kKept) {  // already known: rejected at once
             rejected = true;
             return;
           }
-          candidates.push_back({ms.darts[k], m, &ms, k});
+          candidates.push_back({ms.darts[k], m, mref, k});
         }
       }, &point);
     });
@@ -567,23 +642,37 @@ class Settler {
       std::sort(candidates.begin(), candidates.end(),
                 [](const Candidate& a, const Candidate& b) { return earlier<D>(a.dart, a.cell, b.dart, b.cell); });
       for (const Candidate& q : candidates)
-        if (decide(q.cell, *q.state, q.j)) {
+        if (decide(q.cell, q.ref, q.j)) {
           kept = false;
           break;
         }
     }
-    s.status[j] = kept ? kKept : kRejected;
-    if (kept) s.kept.push_back(j);
+    s.darts[j].status = kept ? kKept : kRejected;
+    if (kept && ref.summary->kept_count++ == 0)
+      ref.summary->kept = s.darts[j];
+    else if (kept)
+      s.kept.push_back(j);
     --depth_;
     return kept;
   }
 
   double origin(int a) const { return torus_ ? torus_->lo[a] : 0.0; }
 
+  /// Calls f(dart) for each kept dart of a cell, in the order they were
+  /// decided, while f returns true.
+  template <typename F>
+  static void for_each_kept(const CellRef<D>& ref, F&& f) {
+    const CellSummary<D>& sum = *ref.summary;
+    if (sum.kept_count == 0) return;
+    if (!f(sum.kept)) return;
+    for (const std::uint32_t k : ref.state->kept)
+      if (!f(ref.state->darts[k])) return;
+  }
+
   struct Candidate {
     Dart<D> dart;
     Cell<D> cell;
-    CellState<D>* state;
+    CellRef<D> ref;
     std::uint32_t j;
   };
   /// Buffers of one recursion depth, kept for the call's whole run: a call
@@ -604,9 +693,15 @@ class Settler {
   Cell<D> period_;
   std::uint64_t key_;
   std::vector<Cell<D>> offsets_;
-  Cell<D> dense_lo_{}, dense_n_{};
+  Cell<D> dense_lo_{}, dense_n_{}, dense_stride_{};
+  std::vector<std::int64_t> offset_steps_;  // offsets_ as steps in the dense memo
   std::vector<CellState<D>> dense_;
-  std::unordered_map<Cell<D>, CellState<D>, CellHash<D>> sparse_;
+  std::vector<CellSummary<D>> dense_summary_;
+  struct SparseCell {
+    CellSummary<D> summary;
+    CellState<D> state;
+  };
+  std::unordered_map<Cell<D>, SparseCell, CellHash<D>> sparse_;
   std::size_t cells_touched_ = 0;
   Cell<D> reach_lo_ = filled_cell<D>(INT64_MAX), reach_hi_ = filled_cell<D>(INT64_MIN);
   std::size_t darts_settled_ = 0;
@@ -724,7 +819,7 @@ PointSet<D> UnboundedField<D>::sample(const Domain<D>& region, UnboundedStats* s
   for_each_cell([&](const Cell<D>& c) {
     const CellState<D>& s = settler.state(c);
     for (std::size_t k = 0; k < s.darts.size(); ++k)
-      if (s.status[k] == kKept && region.contains(s.darts[k].p)) points.push_back(s.darts[k].p);
+      if (s.darts[k].status == kKept && region.contains(s.darts[k].p)) points.push_back(s.darts[k].p);
   });
   std::sort(points.begin(), points.end(), [](const Point<D>& a, const Point<D>& b) {
     return static_cast<const std::array<double, D>&>(a) < static_cast<const std::array<double, D>&>(b);
