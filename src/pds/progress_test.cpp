@@ -222,7 +222,9 @@ TEST(ProgressOfAnalysis, InsideOneDiscrepancy) {
           options);
   int inside = 0;
   for (std::size_t i = 0; i < reports.size(); ++i) {
-    if (i > 0) EXPECT_GT(reports[i].done, reports[i - 1].done);
+    if (i > 0) {
+      EXPECT_GT(reports[i].done, reports[i - 1].done);
+    }
     inside += reports[i].done != std::floor(reports[i].done);
   }
   EXPECT_EQ(inside, 4);  // one a discrepancy

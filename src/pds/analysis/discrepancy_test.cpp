@@ -294,7 +294,9 @@ TEST(Discrepancy, ReportsRowsDoneWithinOneMeasureAndCanBeStopped) {
     ASSERT_EQ(reports.size(), 5u) << discrepancy_method_name(method);  // 0, then after each block
     for (std::size_t i = 0; i < reports.size(); ++i) {
       EXPECT_EQ(reports[i].second, 2000.0);
-      if (i > 0) EXPECT_GT(reports[i].first, reports[i - 1].first);
+      if (i > 0) {
+        EXPECT_GT(reports[i].first, reports[i - 1].first);
+      }
     }
     EXPECT_EQ(reports.back().first, 2000.0);
     const Progress stop{[](double done, double) { return done < 1000; }};
