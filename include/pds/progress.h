@@ -51,13 +51,15 @@ class ProgressReporter {
   }
 
   /// Reports `done` (clamped into [last reported, total]) when it has moved
-  /// by a thousandth of the total since the last report, or every 2^16
-  /// calls, so that a run whose count stalls still hears a cancellation.
+  /// by a thousandth of the total since the last report or first reaches the
+  /// total, or every 2^16 calls, so that a run whose count stalls (or has
+  /// passed its estimated total) still hears a cancellation.
   void update(double done) {
-    if (!progress_ || (reported_ && done_ >= total_)) return;  // the total is reported once
+    if (!progress_) return;
     if (done < done_) done = done_;
     if (done > total_) done = total_;
     if (reported_ && done < next_ && done < total_ && (++calls_ & 0xffff) != 0) return;
+    if (reported_ && done_ >= total_ && (++calls_ & 0xffff) != 0) return;  // the total was reported
     send(done);
   }
 

@@ -58,6 +58,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <deque>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -110,8 +111,8 @@ constexpr std::uint8_t kNotExpanded = 0, kExpanding = 1, kExpanded = 2;
 template <int D>
 struct Node {
   Sub<D> sub{};
-  std::uint32_t first_dart = 0, darts = 0;      // its darts: CellState::darts[first_dart, + darts)
-  std::uint32_t first_child = 0, children = 0;  // its open children: CellState::nodes[first_child, + children)
+  std::uint32_t first_dart = 0, darts = 0;      // its darts, in time order: Settler::darts_[first_dart, + darts)
+  std::uint32_t first_child = 0, children = 0;  // its open children: Settler::nodes_[first_child, + children)
   std::uint8_t level = 0;
   std::uint8_t expanded = kNotExpanded;  // kNotExpanded, kExpanding or kExpanded
 };
@@ -121,14 +122,33 @@ constexpr std::int8_t kClosed = INT8_MAX;  // CellState::done: no sub-cell open,
 
 template <int D>
 struct CellState {
-  std::vector<Dart<D>> darts;        // the level-0 darts in time order, then each node's, each in time order
-  Node<D> root;                      // the cell at level 0; its darts are darts[0, root.darts)
-  std::vector<Node<D>> nodes;        // the open sub-cells found so far (children of one node contiguous)
+  Node<D> root;                     // the cell at level 0, its darts the level-0 darts
   std::vector<std::uint32_t> kept;  // the darts decided kept after the first (CellSummary::kept)
+  std::uint32_t nodes = 0;          // open sub-cells found so far
   std::uint32_t swept = 0;          // level-0 darts [0, swept) decided by the sweep
   std::int8_t done = -1;            // the darts of levels 0..done are all decided (their nodes all exist)
+};
 
-  Node<D>& node(std::uint32_t i) { return i == kRoot ? root : nodes[i]; }
+/// Append-only storage whose elements never move, indexed by 32-bit numbers:
+/// the darts and sub-cells of one call, which the recursion holds references
+/// into while it adds more (one block of them instead of a list a cell).
+template <class T>
+class Arena {
+ public:
+  std::uint32_t size() const { return size_; }
+  T& operator[](std::uint32_t i) { return blocks_[i >> kShift][i & kMask]; }
+  const T& operator[](std::uint32_t i) const { return blocks_[i >> kShift][i & kMask]; }
+  void push_back(const T& v) {
+    if (size_ == UINT32_MAX) throw Failure("unbounded: more than 2^32 darts or sub-cells in one region");
+    if ((size_ & kMask) == 0) blocks_.push_back(std::make_unique<T[]>(kBlock));
+    blocks_[size_ >> kShift][size_ & kMask] = v;
+    ++size_;
+  }
+
+ private:
+  static constexpr std::uint32_t kShift = 11, kBlock = 1u << kShift, kMask = kBlock - 1;
+  std::vector<std::unique_ptr<T[]>> blocks_;
+  std::uint32_t size_ = 0;
 };
 
 /// What the common questions read of a cell, in a small record of its own
@@ -272,7 +292,6 @@ class Settler {
     SparseCell& sparse = sparse_[c];
     return generated({&sparse.summary, &sparse.state}, c);
   }
-  CellState<D>& state(const Cell<D>& c) { return *cell(c).state; }
 
  private:
   CellRef<D> dense_cell(std::size_t index, const Cell<D>& c) {
@@ -298,8 +317,8 @@ class Settler {
     c = canonical(c);
     const CellRef<D> ref = cell(c);
     CellState<D>& s = *ref.state;
-    while (s.swept < s.root.darts && s.darts[s.swept].t < t) {
-      decide(c, ref, s.swept);
+    while (s.swept < s.root.darts && darts_[s.root.first_dart + s.swept].t < t) {
+      decide(c, ref, s.root.first_dart + s.swept);
       ++s.swept;
       ref.summary->decided_until = decided_until(s);
     }
@@ -314,14 +333,13 @@ class Settler {
     const CellRef<D> ref = cell(c);
     CellState<D>& s = *ref.state;
     bool open = false;
-    visit(c, s, kRoot, k, [&](std::uint32_t n) {
-      if (s.node(n).level != k - 1) return;
-      expand(c, s, n);
-      open = open || s.node(n).children > 0;
+    // Expands the nodes of level k - 1 on the way down to those of level k.
+    visit(c, s, kRoot, k + 1, [&](std::uint32_t n) {
+      const Node<D>& node = node_of(s, n);
+      if (node.level != k) return;
+      open = true;
+      for (std::uint32_t i = 0; i < node.darts; ++i) decide(c, ref, node.first_dart + i);
     });
-    for (std::size_t n = 0; n < s.nodes.size(); ++n)
-      if (s.nodes[n].level == k)
-        for (std::uint32_t i = 0; i < s.nodes[n].darts; ++i) decide(c, ref, s.nodes[n].first_dart + i);
     s.done = open ? static_cast<std::int8_t>(k) : kClosed;
     ref.summary->decided_until = decided_until(s);
     return open;
@@ -342,16 +360,19 @@ class Settler {
     return h;
   }
 
-  void generate(const Cell<D>& c, CellState<D>& s) const {
-    stream(cell_key(c), c, 0, Sub<D>{}, 0.0, end_time_, s.darts);
-    s.root.darts = static_cast<std::uint32_t>(s.darts.size());
+  void generate(const Cell<D>& c, CellState<D>& s) {
+    s.root.first_dart = darts_.size();
+    stream(cell_key(c), c, 0, Sub<D>{}, 0.0, end_time_);
+    s.root.darts = darts_.size() - s.root.first_dart;
   }
+
+  Node<D>& node_of(CellState<D>& s, std::uint32_t i) { return i == kRoot ? s.root : nodes_[i]; }
 
   /// The darts of one Poisson stream in [start, end): those of sub-cell `sub`
   /// of cell c at level k (level 0: the cell), rate 2^-kD per unit time (one
   /// per cell's area), positions uniform in the sub-cell; bits from h.
-  void stream(std::uint64_t h, const Cell<D>& c, int k, const Sub<D>& sub, double start, double end,
-              std::vector<Dart<D>>& out) const {
+  /// Appended to darts_.
+  void stream(std::uint64_t h, const Cell<D>& c, int k, const Sub<D>& sub, double start, double end) {
     const double scale = std::ldexp(1.0, -k), wait = std::ldexp(1.0, k * D);
     double t = start;
     for (std::uint32_t j = 0;; ++j) {
@@ -368,7 +389,7 @@ class Settler {
       if (torus_)  // rounding must not put a dart on the torus's upper bound
         for (int a = 0; a < D; ++a)
           if (!(d.p[a] < torus_->hi[a])) d.p[a] = std::nextafter(torus_->hi[a], torus_->lo[a]);
-      out.push_back(d);
+      darts_.push_back(d);
     }
   }
 
@@ -418,13 +439,13 @@ class Settler {
   template <typename F>
   void visit(const Cell<D>& c, CellState<D>& s, std::uint32_t n, int below, F&& f, const Box* near_box = nullptr) {
     f(n);
-    const int level = s.node(n).level;
+    const int level = node_of(s, n).level;
     if (level + 1 >= below) return;
     expand(c, s, n);
-    const std::uint32_t first = s.node(n).first_child, count = s.node(n).children;
+    const std::uint32_t first = node_of(s, n).first_child, count = node_of(s, n).children;
     for (std::uint32_t i = first; i < first + count; ++i) {
       if (near_box) {
-        const Box b = box(c, s.nodes[i].sub, level + 1);
+        const Box b = box(c, nodes_[i].sub, level + 1);
         if (!near(*near_box, b.mid, &b.half)) continue;
       }
       visit(c, s, i, below, f, near_box);
@@ -474,7 +495,7 @@ class Settler {
   double decided_until(const CellState<D>& s) const {
     if (s.done == kClosed) return INFINITY;
     if (s.done >= 0) return level_end_[static_cast<std::size_t>(s.done)];
-    return s.swept < s.root.darts ? s.darts[s.swept].t : 0.0;
+    return s.swept < s.root.darts ? darts_[s.root.first_dart + s.swept].t : 0.0;
   }
 
   /// Finds the open children of node n of cell c (level k - 1 -> k): a child
@@ -485,9 +506,9 @@ class Settler {
   /// leaving it out changes no decision: the darts are still the space-time
   /// Poisson process, restricted to where a dart can be kept.
   void expand(const Cell<D>& c, CellState<D>& s, std::uint32_t n) {
-    if (s.node(n).expanded == kExpanded) return;
-    if (s.node(n).expanded == kExpanding) throw Failure("unbounded: internal error, a sub-cell depends on itself");
-    const int k = s.node(n).level + 1;
+    if (node_of(s, n).expanded == kExpanded) return;
+    if (node_of(s, n).expanded == kExpanding) throw Failure("unbounded: internal error, a sub-cell depends on itself");
+    const int k = node_of(s, n).level + 1;
     if (k > kMaxUnboundedLevel)
       throw Failure("unbounded: a gap is still open after " + std::to_string(kMaxUnboundedLevel) +
                     " levels of refinement (numerical breakdown; report this with the seed and radius)");
@@ -496,8 +517,8 @@ class Settler {
                     " (report this with the seed and radius)");
     max_depth_ = std::max(max_depth_, depth_);
     max_level_ = std::max(max_level_, k);
-    s.node(n).expanded = kExpanding;
-    const Sub<D> parent = s.node(n).sub;
+    node_of(s, n).expanded = kExpanding;
+    const Sub<D> parent = node_of(s, n).sub;
     const double start = level_end_[static_cast<std::size_t>(k - 1)];
     const Box pb = box(c, parent, k - 1);
     // The samples kept before `start` within r of the parent: the darts of
@@ -517,18 +538,19 @@ class Settler {
       }
       CellState<D>& ms = *mref.state;
       visit(m, ms, kRoot, k, [&](std::uint32_t i) {
-        const std::uint32_t first = ms.node(i).first_dart, count = ms.node(i).darts;
+        const std::uint32_t first = node_of(ms, i).first_dart, count = node_of(ms, i).darts;
         for (std::uint32_t j = first; j < first + count; ++j) {
-          if (!(ms.darts[j].t < start) || !near(pb, ms.darts[j].p, nullptr)) continue;
-          if (decide(m, mref, j)) kept.push_back(ms.darts[j].p);
+          if (!(darts_[j].t < start) || !near(pb, darts_[j].p, nullptr)) continue;
+          if (decide(m, mref, j)) kept.push_back(darts_[j].p);
         }
       }, &pb);
     });
     std::array<Sub<D>, (1 << D)> open;
     std::array<std::uint32_t, (1 << D)> counts;
     std::size_t opened = 0;
-    std::vector<Dart<D>>& darts = scratch.darts;
-    darts.clear();
+    // The open children's darts go to darts_ one child after the other
+    // (nothing else is added meanwhile: stream() does not recurse).
+    const std::uint32_t first_dart = darts_.size();
     const std::uint64_t level_key = mix64(cell_key(c) ^ mix64(0x6c6576656cULL + static_cast<std::uint64_t>(k)));
     for (int child = 0; child < (1 << D); ++child) {
       Sub<D> sub;
@@ -554,18 +576,19 @@ class Settler {
       open[opened] = sub;
       std::uint64_t h = level_key;
       for (int a = 0; a < D; ++a) h = mix64(h ^ mix64(sub[a] + 0x8f1bbcdcbfa53e0bULL * static_cast<std::uint64_t>(a + 1)));
-      const std::size_t before = darts.size();
-      stream(h, c, k, sub, start, level_end_[static_cast<std::size_t>(k)], darts);
-      counts[opened++] = static_cast<std::uint32_t>(darts.size() - before);
+      const std::uint32_t before = darts_.size();
+      stream(h, c, k, sub, start, level_end_[static_cast<std::size_t>(k)]);
+      counts[opened++] = darts_.size() - before;
     }
-    if (s.nodes.size() + opened > kMaxNodesPerCell)
+    if (s.nodes + opened > kMaxNodesPerCell)
       throw Failure("unbounded: more than " + std::to_string(kMaxNodesPerCell) +
                     " sub-cells of one cell open (numerical breakdown; report this with the seed and radius)");
-    Node<D>& node = s.node(n);
-    node.first_child = static_cast<std::uint32_t>(s.nodes.size());
+    Node<D>& node = node_of(s, n);
+    node.first_child = nodes_.size();
     node.children = static_cast<std::uint32_t>(opened);
     node.expanded = kExpanded;
-    std::uint32_t first = static_cast<std::uint32_t>(s.darts.size());
+    s.nodes += static_cast<std::uint32_t>(opened);
+    std::uint32_t first = first_dart;
     for (std::size_t i = 0; i < opened; ++i) {
       Node<D> child;
       child.sub = open[i];
@@ -573,9 +596,8 @@ class Settler {
       child.first_dart = first;
       child.darts = counts[i];
       first += counts[i];
-      s.nodes.push_back(child);
+      nodes_.push_back(child);
     }
-    s.darts.insert(s.darts.end(), darts.begin(), darts.end());
     --depth_;
   }
 
@@ -586,13 +608,13 @@ class Settler {
   /// explored lazily; docs/unbounded.md measures its reach).
   bool decide(const Cell<D>& c, const CellRef<D>& ref, std::uint32_t j) {
     CellState<D>& s = *ref.state;
-    if (s.darts[j].status != kUndecided) return s.darts[j].status == kKept;
+    if (darts_[j].status != kUndecided) return darts_[j].status == kKept;
     if (++depth_ > kMaxUnboundedDepth)
       throw Failure("unbounded: a chain of dependent darts is deeper than " + std::to_string(kMaxUnboundedDepth) +
                     " (report this with the seed and radius)");
     max_depth_ = std::max(max_depth_, depth_);
     ++darts_settled_;
-    const Dart<D> d = s.darts[j];
+    const Dart<D> d = darts_[j];
     const int level = d.t < end_time_ ? 0 : level_of(d.t);
     std::vector<Candidate>& candidates = scratch_at(depth_).candidates;
     candidates.clear();
@@ -620,20 +642,20 @@ class Settler {
       // earlier darts (of lower levels), never d.
       visit(m, ms, kRoot, level + 1, [&](std::uint32_t i) {
         if (rejected) return;
-        const std::uint32_t first = ms.node(i).first_dart, count = ms.node(i).darts;
-        for (std::uint32_t k = first; k < first + count && ms.darts[k].t <= d.t; ++k) {
-          if (ms.darts[k].status == kRejected || !earlier<D>(ms.darts[k], m, d, c)) continue;
+        const std::uint32_t first = node_of(ms, i).first_dart, count = node_of(ms, i).darts;
+        for (std::uint32_t k = first; k < first + count && darts_[k].t <= d.t; ++k) {
+          if (darts_[k].status == kRejected || !earlier<D>(darts_[k], m, d, c)) continue;
           double dist2 = 0.0;
           for (int a = 0; a < D; ++a) {
-            const double e = delta(d.p[a], ms.darts[k].p[a], a);
+            const double e = delta(d.p[a], darts_[k].p[a], a);
             dist2 += e * e;
           }
           if (!(dist2 < r2_)) continue;
-          if (ms.darts[k].status == kKept) {  // already known: rejected at once
+          if (darts_[k].status == kKept) {  // already known: rejected at once
             rejected = true;
             return;
           }
-          candidates.push_back({ms.darts[k], m, mref, k});
+          candidates.push_back({darts_[k], m, mref, k});
         }
       }, &point);
     });
@@ -647,9 +669,9 @@ class Settler {
           break;
         }
     }
-    s.darts[j].status = kept ? kKept : kRejected;
+    darts_[j].status = kept ? kKept : kRejected;
     if (kept && ref.summary->kept_count++ == 0)
-      ref.summary->kept = s.darts[j];
+      ref.summary->kept = darts_[j];
     else if (kept)
       s.kept.push_back(j);
     --depth_;
@@ -658,17 +680,19 @@ class Settler {
 
   double origin(int a) const { return torus_ ? torus_->lo[a] : 0.0; }
 
+ public:
   /// Calls f(dart) for each kept dart of a cell, in the order they were
   /// decided, while f returns true.
   template <typename F>
-  static void for_each_kept(const CellRef<D>& ref, F&& f) {
+  void for_each_kept(const CellRef<D>& ref, F&& f) {
     const CellSummary<D>& sum = *ref.summary;
     if (sum.kept_count == 0) return;
     if (!f(sum.kept)) return;
     for (const std::uint32_t k : ref.state->kept)
-      if (!f(ref.state->darts[k])) return;
+      if (!f(darts_[k])) return;
   }
 
+ private:
   struct Candidate {
     Dart<D> dart;
     Cell<D> cell;
@@ -679,7 +703,6 @@ class Settler {
   /// only uses its own depth's, and finishes with them before returning.
   struct Scratch {
     std::vector<Point<D>> kept;
-    std::vector<Dart<D>> darts;
     std::vector<Candidate> candidates;
   };
   Scratch& scratch_at(int depth) {
@@ -708,6 +731,8 @@ class Settler {
   int depth_ = 0, max_depth_ = 0, max_level_ = 0;
   std::array<double, kMaxUnboundedLevel + 1> level_end_{}, scale_{};
   std::deque<Scratch> scratch_;  // a deque: growing it moves no buffer in use
+  Arena<Dart<D>> darts_;         // every cell's darts: a node's contiguous, in time order
+  Arena<Node<D>> nodes_;         // the open sub-cells: the children of one node contiguous
 };
 
 }  // namespace
@@ -817,9 +842,10 @@ PointSet<D> UnboundedField<D>::sample(const Domain<D>& region, UnboundedStats* s
 
   PointSet<D> points;
   for_each_cell([&](const Cell<D>& c) {
-    const CellState<D>& s = settler.state(c);
-    for (std::size_t k = 0; k < s.darts.size(); ++k)
-      if (s.darts[k].status == kKept && region.contains(s.darts[k].p)) points.push_back(s.darts[k].p);
+    settler.for_each_kept(settler.cell(c), [&](const Dart<D>& d) {
+      if (region.contains(d.p)) points.push_back(d.p);
+      return true;
+    });
   });
   std::sort(points.begin(), points.end(), [](const Point<D>& a, const Point<D>& b) {
     return static_cast<const std::array<double, D>&>(a) < static_cast<const std::array<double, D>&>(b);
