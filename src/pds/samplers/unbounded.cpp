@@ -311,7 +311,6 @@ class Settler {
   }
 
  public:
-
   /// Decides every level-0 dart of cell c before time t.
   void settle_until(Cell<D> c, double t) {
     c = canonical(c);
@@ -453,7 +452,7 @@ class Settler {
   }
 
   /// The cells (canonical) whose points can be within r of box b of cell c:
-  /// calls f(m, state).
+  /// calls f(m, its CellRef), nearest first.
   template <typename F>
   void for_each_neighbour(const Cell<D>& c, const Box& b, F&& f) {
     // The squared gap from b to the cells of each offset along each axis,
