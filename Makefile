@@ -69,8 +69,8 @@ san-build: deps
 # libraries into uninstrumented programs), the generated-docs checks (not
 # code), the long statistical comparisons, whose code paths the other
 # tests already run under the sanitizers, and the 8D lattice's maximality
-# proof (103 s instrumented, a third of the lane's test time; the 4D and 5D
-# lattices run the same code), gbn's spectrum test (18 s instrumented; the other
+# proof (103 s instrumented, a third of the lane's test time; the 4D
+# lattice runs the same code), gbn's spectrum test (18 s instrumented; the other
 # gbn tests run its code), ebeida's largest 5D cases and wei's 5D and 6D
 # tests (below); the property
 # sweep runs 2 of its 20 shards; the registry's 6D and 7D cases (about 110 s
