@@ -669,10 +669,12 @@ class Settler {
         }
     }
     darts_[j].status = kept ? kKept : kRejected;
-    if (kept && ref.summary->kept_count++ == 0)
-      ref.summary->kept = darts_[j];
-    else if (kept)
-      s.kept.push_back(j);
+    if (kept) {
+      if (ref.summary->kept_count++ == 0)
+        ref.summary->kept = darts_[j];
+      else
+        s.kept.push_back(j);
+    }
     --depth_;
     return kept;
   }
