@@ -611,7 +611,7 @@ class FlatLevels {
       for (std::size_t t = j; t < j + kBlock; t += 2) {
         const Cell& a = base[list[t]];
         const Cell& b = base[list[t + 1]];
-        Pair s;
+        Pair s = zero;  // set at i == 0; initialised for -Wmaybe-uninitialized at -O1
         for (int i = 0; i < D; ++i) {
           Pair d = Pair{a.p[i], b.p[i]} - q.x[i];
           if constexpr (MinImage) {
