@@ -51,7 +51,7 @@
 // rejected by a stored nearby sample without a query) and some twenty leaf
 // tightenings in 2D (more in 3D), both growing slowly with i; in all about
 // N^1.2 (docs/best-candidate.md: 10^5 in 2D in 8.5 s, 10^6 in 147 s, 10^5 in
-// 3D in 58 s). Memory: the leaves (4 a sample in 2D, 16 in 3D, for up to
+// 3D in 58 s). Memory: the leaves (4 a sample in 1D and 2D, 16 in 3D, for up to
 // twice the samples) of about 40 bytes, plus the live boxes (well under one
 // per sample, ~60-90 bytes).
 
@@ -84,7 +84,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // 16; 3D runs 1.4x faster with 16 than with 4 (smaller leaves, fewer samples
 // and sub-boxes in each branch and bound).
 template <int D>
-constexpr double kLeavesPerSample = D == 2 ? 4.0 : 16.0;
+constexpr double kLeavesPerSample = D <= 2 ? 4.0 : 16.0;  // 1D: 2 took a third more time, 16 twice the memory
 
 // From 4 dimensions the method is taken literally, m*i uniform candidates for
 // every sample: the leaves would number 2^D and more a sample, and their
@@ -514,8 +514,11 @@ class GapBoxes {
   std::array<std::size_t, D> tile_stride_{};
   std::size_t leaves_ = 0, size_ = 0;
   double volume_ = 0.0, half_diagonal_ = 0.0;
-  static constexpr int kTile = D == 2 ? 8 : 4;
+  // kTile^D = kTileSlots leaves a tile in 1 to 3 dimensions (a 1D tile of
+  // 4 left 60 of its 64 slots empty: 12 KB a sample).
+  static constexpr int kTile = D == 1 ? 64 : D == 2 ? 8 : 4;
   static constexpr std::size_t kTileSlots = 64;
+  static_assert(D >= 4 || kTileSlots == std::size_t(kTile) * (D >= 2 ? kTile : 1) * (D >= 3 ? kTile : 1));
   std::vector<double> tree_;  // idle bounds (leaves at size_ + leaf), max tree
   std::vector<std::uint32_t> first_, count_;
   std::vector<double> live_max_;
