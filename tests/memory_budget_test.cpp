@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "pds/error.h"
 #include "pds/registry.h"
@@ -65,9 +67,29 @@ TEST(MemoryBudget, RatioFollowsTheDimensionWhereTheMethodSaysSo) {
     std::vector<double> lo, hi;
     r.bounds(lo, hi);
     const double points = typical_count(sizing_volume(lo.data(), hi.data(), dim, 0.3), 0.3, dim);
-    const double ratio = dim >= 5 ? 170 : dim >= 4 ? 50 : wei.memory_ratio;
+    const double ratio = dim >= 5 ? 170 : dim >= 4 ? 50 : dim >= 3 ? 6.5 : wei.memory_ratio;
     EXPECT_DOUBLE_EQ(peak_memory_estimate(wei, r), points * dim * 8 * ratio) << dim;
   }
+}
+
+// bridson's count takes another path (its last set, then the elimination of
+// the surplus) that needs more in 3D: a count takes that ratio where larger.
+TEST(MemoryBudget, ACountTakesItsOwnRatioWhereLarger) {
+  const Method& bridson = find_method("bridson");
+  GenerateRequest r;
+  r.count = 1000;
+  for (const auto& [dim, ratio] : {std::pair{1, 8.0}, {2, 8.0}, {3, 20.0}, {4, 7.0}, {8, 7.0}}) {
+    r.dim = dim;
+    EXPECT_DOUBLE_EQ(peak_memory_estimate(bridson, r), 1000.0 * dim * 8 * ratio) << dim;
+  }
+  // Without a count, the method's own ratios.
+  r.count.reset();
+  r.radius = 0.1;
+  r.dim = 3;
+  std::vector<double> lo, hi;
+  r.bounds(lo, hi);
+  const double points = typical_count(sizing_volume(lo.data(), hi.data(), 3, 0.1), 0.1, 3);
+  EXPECT_DOUBLE_EQ(peak_memory_estimate(bridson, r), points * 3 * 8 * bridson.memory_ratio);
 }
 
 }  // namespace

@@ -153,12 +153,17 @@ struct Method {
   DimRange dims;
   std::vector<RhoBand> rho;  // expected relative radius, where measured
   /// Peak memory a run allocates over the size of its output (8 bytes a
-  /// coordinate), measured at N = 10^6 by scripts/peak_memory.py
-  /// (docs/reliability.md) and rounded up: the factor of peak_memory_estimate.
+  /// coordinate), measured by scripts/peak_memory.py (docs/reliability.md;
+  /// 10^6 points in 1D and 2D, 3 10^5 in 3D) and rounded up with a margin:
+  /// the factor of peak_memory_estimate, which is to bound the peak.
   double memory_ratio = 4;
-  /// Where a dimension needs more: (D, ratio) pairs, ascending in D, each
-  /// taking over memory_ratio from D on (measured in that dimension).
+  /// Where a dimension needs another ratio: (D, ratio) pairs, ascending in
+  /// D, each taking over memory_ratio from D on (measured in that dimension).
   std::vector<std::pair<int, double>> memory_ratio_from_dim;
+  /// With a count, where the count takes a path that needs more (bridson: its
+  /// last set, then the elimination of the surplus): (D, ratio) pairs as
+  /// above, each the ratio from D on wherever it is the larger.
+  std::vector<std::pair<int, double>> count_memory_ratio_from_dim;
   std::vector<MethodParam> params;
   /// Runs the method on a request that generate() has already validated.
   PointCloud (*run)(const GenerateRequest&) = nullptr;
@@ -196,7 +201,8 @@ ClassCloud generate_classes(const MultiClassParams& params, const GenerateReques
 /// The peak memory in bytes a request to `method` is expected to allocate:
 /// its points (the count, or for a radius pds::typical_count, an estimate)
 /// x dim x 8 bytes x the method's memory_ratio (or memory_ratio_from_dim's
-/// for the request's dimension). The process
+/// for the request's dimension; with a count, count_memory_ratio_from_dim's
+/// where larger). The process
 /// itself (about 14 MB) is not counted. GenerateRequest::max_memory and
 /// --max-memory refuse by it.
 double peak_memory_estimate(const Method& method, const GenerateRequest& request);

@@ -70,10 +70,12 @@ const Method& wei_method() {
               {2, true, 0.02, 0.755, 0.80},
               {3, false, 0.08, 0.82, 0.87},
               {3, true, 0.08, 0.78, 0.83}},
-      .memory_ratio = 2.5,
-      // From 4D the open parts of the finer levels dominate: 53 MB for 35,147
-      // points in 4D, 680 MB for 103,730 in 5D (unit torus, docs/wei.md).
-      .memory_ratio_from_dim = {{4, 50}, {5, 170}},
+      // Measured 2.9 in 1D and 2.4 in 2D, 5.3 over the estimate's typical
+      // count in 3D; from 4D the open parts of the finer levels dominate: 53
+      // MB for 35,147 points in 4D, 680 MB for 103,730 in 5D (unit torus,
+      // docs/wei.md).
+      .memory_ratio = 3.5,
+      .memory_ratio_from_dim = {{3, 6.5}, {4, 50}, {5, 170}},
       .params =
           {{"k", double(WeiParams{}.trials), 1, 1000, true,
             "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},
@@ -119,7 +121,11 @@ const Method& ebeida_method() {
               {2, true, 0.02, 0.755, 0.80},
               {3, false, 0.08, 0.82, 0.87},
               {3, true, 0.08, 0.78, 0.83}},
+      // Measured 8.2 in 2D; over the estimate's typical count 16.6 in 3D,
+      // 20.7 in 4D and 249 in 5D, where the listed sub-cells hold about 18 KB
+      // a sample (docs/reliability.md).
       .memory_ratio = 11,
+      .memory_ratio_from_dim = {{3, 20}, {4, 25}, {5, 300}},
       .run =
           [](const GenerateRequest& r) {
             const EbeidaParams params{*r.radius, r.max_points, r.progress};
@@ -151,8 +157,10 @@ const Method& maximal_darts_method() {
               {3, false, 0.08, 0.82, 0.87},
               {3, true, 0.08, 0.78, 0.83}},
       // scripts/peak_memory.py at 10^6: growth 3.9 times the output (the open
-      // sub-cells of the first refinement levels).
-      .memory_ratio = 4,
+      // sub-cells of the first refinement levels); in 3D 10.7 over the
+      // estimate's typical count.
+      .memory_ratio = 4.5,
+      .memory_ratio_from_dim = {{3, 12}},
       .run =
           [](const GenerateRequest& r) {
             const MaximalDartsParams params{*r.radius, r.threads, r.max_points, r.progress};

@@ -259,9 +259,13 @@ double peak_memory_estimate(const Method& method, const GenerateRequest& request
     points = request.count ? std::min(points, typical) : typical;  // a count stops the run
   }
   points += static_cast<double>(request.constraints.fixed.size());
-  double ratio = method.memory_ratio;
-  for (const auto& [dim, from_dim] : method.memory_ratio_from_dim)
-    if (request.dim >= dim) ratio = from_dim;
+  const auto from_dim = [&](const std::vector<std::pair<int, double>>& ratios, double ratio) {
+    for (const auto& [dim, r] : ratios)
+      if (request.dim >= dim) ratio = r;
+    return ratio;
+  };
+  double ratio = from_dim(method.memory_ratio_from_dim, method.memory_ratio);
+  if (request.count) ratio = std::max(ratio, from_dim(method.count_memory_ratio_from_dim, 0.0));
   return points * request.dim * static_cast<double>(sizeof(double)) * ratio;
 }
 
