@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "pds/analysis/report.h"
@@ -272,6 +274,29 @@ TEST(ProgressPartOf, MapsEachPartIntoTheWhole) {
   EXPECT_EQ(reports[8].done, 3.0);
   EXPECT_EQ(reports[8].total, 3.0);
   EXPECT_FALSE(part_of(Progress{}, 0, 3));  // no callback, nothing to call
+}
+
+// poll() repeats the last report once a tenth of a second has passed, so a
+// stretch of work that moves no count (a refinement) still hears a stop.
+TEST(ProgressPoll, RepeatsTheLastReportAfterATenthOfASecondAndHearsAStop) {
+  std::vector<Report> reports;
+  bool stop = false;
+  Progress progress{[&](double done, double total) {
+    reports.push_back({done, total});
+    return !stop;
+  }};
+  ProgressReporter reporter(progress, 10);
+  reporter.update(4);
+  const std::size_t before = reports.size();
+  std::this_thread::sleep_for(std::chrono::milliseconds(120));
+  reporter.poll();
+  ASSERT_EQ(reports.size(), before + 1);
+  EXPECT_EQ(reports.back().done, 4.0);  // the same count: monotone
+  stop = true;
+  std::this_thread::sleep_for(std::chrono::milliseconds(120));
+  EXPECT_THROW(reporter.poll(), Cancelled);
+  ProgressReporter silent(Progress{}, 10);
+  EXPECT_NO_THROW(silent.poll());  // no callback, nothing to ask
 }
 
 }  // namespace

@@ -701,8 +701,9 @@ class EbeidaListSampler {
     std::uint32_t gathered = std::numeric_limits<std::uint32_t>::max();
     Point<D> cell_centre;
     for (std::size_t k = 0; k < open.size(); ++k) {
-      // A level's refinement can take seconds: a cancellation is heard here too.
-      if ((k & (kReportEvery - 1)) == 0) progress_.update(static_cast<double>(samples_.size()));
+      // A level's refinement can take seconds and places no sample: a
+      // cancellation is heard here too.
+      if ((k & 63) == 0) progress_.poll();
       const Entry& entry = open[k];
       const std::uint32_t cell = cell_of(entry);
       if (closed_[cell]) continue;

@@ -987,7 +987,7 @@ class WeiUnitSampler : public WeiPasses<WeiUnitSampler<D>> {
     const std::size_t chunks = (roots + kRootsPerChunk - 1) / kRootsPerChunk;
     std::vector<std::vector<Part>> found(chunks);
     std::atomic<std::size_t> total{0};
-    parallel_for(0, chunks, 1, params_.threads, [&](std::size_t chunk_begin, std::size_t chunk_end) {
+    const auto descend_chunks = [&](std::size_t chunk_begin, std::size_t chunk_end) {
       Scratch scratch;
       for (std::size_t chunk = chunk_begin; chunk != chunk_end; ++chunk)
         for (std::size_t root = chunk * kRootsPerChunk; root < std::min(roots, (chunk + 1) * kRootsPerChunk); ++root) {
@@ -1010,7 +1010,14 @@ class WeiUnitSampler : public WeiPasses<WeiUnitSampler<D>> {
                           " GiB of open cells at level " + std::to_string(level) +
                           "; use fewer levels, a larger radius, or bridson");
         }
-    });
+    };
+    // A level's descent can take seconds in 5D and places no sample: between
+    // batches of units this thread polls for a stop.
+    constexpr std::size_t kChunksPerBatch = 256;
+    for (std::size_t batch = 0; batch < chunks; batch += kChunksPerBatch) {
+      parallel_for(batch, std::min(chunks, batch + kChunksPerBatch), 1, params_.threads, descend_chunks);
+      progress_.poll();
+    }
     std::vector<Part> next;
     for (auto& f : found) next.insert(next.end(), f.begin(), f.end());
     found = {};
