@@ -251,7 +251,7 @@ py::list methods() {
                         py::arg("takes_count") = m.takes_count, py::arg("takes_radius") = m.takes_radius,
                         py::arg("min_distance") = m.min_distance, py::arg("maximal") = m.maximal,
                         py::arg("exact_count") = m.exact_count, py::arg("progressive") = m.progressive,
-                        py::arg("deterministic") = m.deterministic, py::arg("square_torus_only") = m.square_torus_only,
+                        py::arg("deterministic") = m.deterministic, py::arg("equal_periods") = m.equal_periods,
                         py::arg("dims") = py::module_::import("builtins").attr("range")(m.dims.lo, m.dims.hi + 1),
                         py::arg("params") = params));
   }

@@ -41,7 +41,6 @@ std::vector<Case> all_cases(bool spaced_only = false) {
   for (const Method& m : methods())
     for (int dim : m.dims.tested())
       for (bool torus : {false, true}) {
-        if (m.square_torus_only && !torus) continue;
         if (m.takes_count && !spaced_only) {
           cases.push_back({m.name, dim, torus, false});
         }
@@ -62,11 +61,13 @@ class Conformance : public ::testing::TestWithParam<Case> {
     // A non-unit domain catches code that assumes [0, 1).
     r.lo.assign(c.dim, -0.5);
     r.hi.assign(c.dim, 0.5);
-    if (!find_method(c.method).square_torus_only) r.hi[0] = 1.5;
+    // A torus with equal periods where the method asks for them.
+    const bool square = c.torus && find_method(c.method).equal_periods;
+    if (!square) r.hi[0] = 1.5;
     if (c.by_radius) {
       // About 300 points past 3D (the plane and space keep their radii):
       // the radius at which 300 points have relative radius 0.7.
-      const double volume = find_method(c.method).square_torus_only ? 1.0 : 2.0;
+      const double volume = square ? 1.0 : 2.0;
       r.radius = c.dim == 2 ? 0.04 : c.dim == 3 ? 0.15 : 1.4 * max_packing_radius(volume, 300, c.dim);
       // best-candidate fills a box's corners and faces first (2,600 points at
       // that radius in 8D, at m N^2 / 2 candidates): a radius 1.3 times larger

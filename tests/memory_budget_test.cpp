@@ -92,5 +92,23 @@ TEST(MemoryBudget, ACountTakesItsOwnRatioWhereLarger) {
   EXPECT_DOUBLE_EQ(peak_memory_estimate(bridson, r), points * 3 * 8 * bridson.memory_ratio);
 }
 
+// elimination holds its candidates: asking for more of them than the
+// default (5 N) scales the estimate with them; fewer keep the default's.
+TEST(MemoryBudget, MoreCandidatesScaleTheEliminationEstimate) {
+  const Method& elimination = find_method("elimination");
+  GenerateRequest r;
+  r.count = 1000;
+  const double at_default = peak_memory_estimate(elimination, r);
+  EXPECT_DOUBLE_EQ(at_default, 1000.0 * 2 * 8 * 18);
+  r.params["candidates"] = 20;
+  EXPECT_DOUBLE_EQ(peak_memory_estimate(elimination, r), 4 * at_default);
+  r.params["candidates"] = 2;
+  EXPECT_DOUBLE_EQ(peak_memory_estimate(elimination, r), at_default);
+  // A budget between the two refuses 20 N candidates before allocating.
+  r.params["candidates"] = 20;
+  r.max_memory = 2 * at_default;
+  EXPECT_THROW(generate("elimination", r), InvalidArgument);
+}
+
 }  // namespace
 }  // namespace pds

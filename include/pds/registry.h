@@ -148,7 +148,7 @@ struct Method {
   bool progressive = false;        // every prefix of the output is itself a well-spread set
   bool deterministic = false;      // ignores the seed
   bool compare = false;            // one of `pds compare`'s default rows
-  bool square_torus_only = false;  // runs on tori with equal periods only (generate() refuses the rest)
+  bool equal_periods = false;  // on a torus, equal periods only (generate() refuses the rest; boxes of any shape)
   bool constraints = false;        // takes GenerateRequest::constraints (radius field, mask, fixed points)
   DimRange dims;
   std::vector<RhoBand> rho;  // expected relative radius, where measured
@@ -164,6 +164,9 @@ struct Method {
   /// last set, then the elimination of the surplus): (D, ratio) pairs as
   /// above, each the ratio from D on wherever it is the larger.
   std::vector<std::pair<int, double>> count_memory_ratio_from_dim;
+  /// A parameter whose value the memory grows with (elimination's
+  /// candidates): above its default, the ratio is scaled by value / default.
+  std::string memory_scales_with;
   std::vector<MethodParam> params;
   /// Runs the method on a request that generate() has already validated.
   PointCloud (*run)(const GenerateRequest&) = nullptr;
@@ -202,7 +205,8 @@ ClassCloud generate_classes(const MultiClassParams& params, const GenerateReques
 /// its points (the count, or for a radius pds::typical_count, an estimate)
 /// x dim x 8 bytes x the method's memory_ratio (or memory_ratio_from_dim's
 /// for the request's dimension; with a count, count_memory_ratio_from_dim's
-/// where larger). The process
+/// where larger; scaled by memory_scales_with's value over its default where
+/// that is above 1). The process
 /// itself (about 14 MB) is not counted. GenerateRequest::max_memory and
 /// --max-memory refuse by it.
 double peak_memory_estimate(const Method& method, const GenerateRequest& request);

@@ -255,8 +255,8 @@ def methods() -> list[dict]:
     Each is a dict: ``name``, ``family``, ``summary``, ``citation``, ``docs``
     (its page in the repository), ``takes_count``, ``takes_radius``, the
     guarantees ``min_distance``, ``maximal``, ``exact_count``,
-    ``progressive``, ``deterministic``, ``square_torus_only`` (runs on tori
-    with equal periods only), ``dims``, and ``params`` (each with
+    ``progressive``, ``deterministic``, ``equal_periods`` (on a torus, equal
+    periods only), ``dims``, and ``params`` (each with
     ``name``, ``default``, ``min``, ``max``, ``integer``, ``help``).
     """
     return _pds.methods()

@@ -19,7 +19,7 @@ def cases():
         # and latin-hypercube go to 2^20, where memory, not code, changes).
         top = min(m["dims"][-1], 21201)
         for dim in [d for d in m["dims"] if d <= 8] + ([top] if top > 8 else []):
-            torus = dim == 3 or m["square_torus_only"]
+            torus = dim == 3
             if m["takes_count"]:
                 yield pytest.param(m["name"], dim, {"count": 300}, torus, id=f"{m['name']}-{dim}d-count")
             if m["takes_radius"]:

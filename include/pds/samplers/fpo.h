@@ -44,18 +44,20 @@ struct FpoResult {
 };
 
 /// Optimizes `start` on a square torus (CGAL's periodic Delaunay
-/// triangulation takes square periods only). Each step removes point x from
-/// the triangulation and takes, among the faces incident to x's former
-/// neighbours (the hole and its ring), the one with the largest circumcircle;
-/// x moves to its centre if its nearest neighbour there is farther than at
-/// its old place (Domain::distance2), else stays.
+/// triangulation takes square periods only) or in a box of any shape. Each
+/// step removes point x from the triangulation and takes, among the faces
+/// incident to x's former neighbours (the hole and its ring), the one with
+/// the largest circumcircle (in a box: whose centre is inside it, and also
+/// the points where those neighbours' Voronoi cells meet a side or hold a
+/// corner); x moves to the farthest of these if its nearest neighbour there
+/// is farther than at its old place (Domain::distance2), else stays.
 /// Guarantees: the points stay in [lo, hi) and keep their count and order;
 /// the minimum distance never decreases from one sweep to the next (a move
 /// takes x only where its nearest neighbour is farther than before, so no
 /// new pair is closer than the old minimum), and each sweep's figures are
 /// exact for the set it left; deterministic (no randomness).
-/// Invalid (InvalidArgument): fewer than 2 points, a box or a torus whose
-/// periods differ, a point outside the domain or two equal points, sweeps < 1,
+/// Invalid (InvalidArgument): fewer than 2 points, a torus whose periods
+/// differ, a point outside the domain or two equal points, sweeps < 1,
 /// tolerance < 0.
 FpoResult fpo_optimize(const PointSet<2>& start, const Domain<2>& domain, const FpoParams& params);
 

@@ -14,13 +14,13 @@ const Method& fpo_method() {
       .docs = "docs/fpo.md",
       .summary =
           "farthest-point optimization (Schlömer et al.): each point moved to the largest empty circle near it, "
-          "sweeps until the minimum distance stops growing; 2D square torus",
+          "sweeps until the minimum distance stops growing; 2D box or square torus",
       .citation =
           "T. Schlömer, D. Heck, O. Deussen, Farthest-point optimized point sets with maximized minimum "
           "distance, HPG 2011",
       .takes_count = true,
       .exact_count = true,
-      .square_torus_only = true,
+      .equal_periods = true,
       .dims = {2, 2},
       .memory_ratio = 13,
       .params = {{"sweeps", 1000, 1, 100000, true, "most sweeps (each moves every point once)"},

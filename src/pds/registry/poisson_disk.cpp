@@ -231,6 +231,7 @@ const Method& elimination_method() {
       // Measured 20.9 in 1D, 15.8 in 2D, 14.2 in 3D (5N candidates).
       .memory_ratio = 25,
       .memory_ratio_from_dim = {{2, 18}},
+      .memory_scales_with = "candidates",  // the candidates are what takes the memory
       .params = {{"candidates", 5, 1, 100, false, "white-noise candidates as a multiple of the count"},
                  {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},

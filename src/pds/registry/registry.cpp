@@ -174,11 +174,10 @@ void validate(const Method& m, const GenerateRequest& r) {
     visit_dim<kMinDim, kMaxDim>(r.dim, [&](auto d) {
       constexpr int D = decltype(d)::value;
       const Domain<D> domain = r.domain<D>();  // validates the bounds
-      if (m.square_torus_only) {
+      if (m.equal_periods && domain.periodic) {
         bool square = true;
         for (int i = 1; i < D; ++i) square = square && domain.extent(i) == domain.extent(0);
-        if (!domain.periodic || !square)
-          throw InvalidArgument(m.name + " runs on a torus with equal periods only (--torus, square --bounds)");
+        if (!square) throw InvalidArgument(m.name + " runs on a torus with equal periods only (square --bounds)");
       }
       if (r.radius) {
         if (!m.takes_radius) throw InvalidArgument(m.name + " does not take --radius (use --count)");
@@ -266,6 +265,12 @@ double peak_memory_estimate(const Method& method, const GenerateRequest& request
   };
   double ratio = from_dim(method.memory_ratio_from_dim, method.memory_ratio);
   if (request.count) ratio = std::max(ratio, from_dim(method.count_memory_ratio_from_dim, 0.0));
+  if (!method.memory_scales_with.empty()) {
+    const auto param = std::ranges::find(method.params, method.memory_scales_with, &MethodParam::name);
+    const auto given = request.params.find(method.memory_scales_with);
+    if (param != method.params.end() && given != request.params.end() && given->second > param->default_value)
+      ratio *= given->second / param->default_value;
+  }
   return points * request.dim * static_cast<double>(sizeof(double)) * ratio;
 }
 

@@ -13,11 +13,15 @@
 // tolerance (the stop rule) or the sweep budget is spent. The paper reports
 // relative radius ~0.93 and an isotropic spectrum with a pronounced peak.
 //
-// Our realisation: CGAL's Periodic_2_Delaunay_triangulation_2 (exact
-// predicates, inexact constructions; square tori only), each point stored
-// once, its index in the vertex's info. Circumcentres are computed relative
-// to one vertex of the face, from the faces' periodic offsets (as in
-// samplers/jones.cpp), then wrapped into the domain. The acceptance test and
+// Our realisation: on a torus CGAL's Periodic_2_Delaunay_triangulation_2
+// (exact predicates, inexact constructions; square tori only), each point
+// stored once, its index in the vertex's info; circumcentres are computed
+// relative to one vertex of the face, from the faces' periodic offsets (as in
+// samplers/jones.cpp), then wrapped into the domain. In a box (the paper
+// works on the torus) CGAL's Delaunay_triangulation_2: the farthest point of
+// a box lies at a Voronoi vertex inside it, where a Voronoi edge meets a
+// side, or at a corner, so the local search around the former neighbours
+// takes all three (BoxOptimizer). The acceptance test and
 // every reported distance use Domain::distance2 on the stored coordinates:
 // a move is kept only when the moved point's nearest Delaunay neighbour (its
 // nearest point) is strictly farther than before, which is what makes the
@@ -28,20 +32,24 @@
 // Complexity: a move is a removal and an insertion (expected O(1) each on
 // well-spread points) and a scan of ~40 faces; a sweep is O(N). Memory: the
 // triangulation, about 150 bytes a point.
-// Limits: 2D, square tori.
+// Limits: 2D; tori with equal periods.
 
 #include "pds/samplers/fpo.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
 #include <CGAL/Periodic_2_Delaunay_triangulation_traits_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "pds/detail/format.h"
 #include "pds/error.h"
@@ -53,29 +61,23 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Traits = CGAL::Periodic_2_Delaunay_triangulation_traits_2<Kernel>;
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Traits,
-                                                               CGAL::Periodic_2_triangulation_vertex_base_2<Traits>>;
-using Tds = CGAL::Triangulation_data_structure_2<VertexBase, CGAL::Periodic_2_triangulation_face_base_2<Traits>>;
-using Delaunay = CGAL::Periodic_2_Delaunay_triangulation_2<Traits, Tds>;
-using Vertex = Delaunay::Vertex_handle;
-using Face = Delaunay::Face_handle;
+using PeriodicVertexBase =
+    CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Traits, CGAL::Periodic_2_triangulation_vertex_base_2<Traits>>;
+using PeriodicTds =
+    CGAL::Triangulation_data_structure_2<PeriodicVertexBase, CGAL::Periodic_2_triangulation_face_base_2<Traits>>;
+using PeriodicDelaunay = CGAL::Periodic_2_Delaunay_triangulation_2<Traits, PeriodicTds>;
+using BoxTds = CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Kernel>>;
+using BoxDelaunay = CGAL::Delaunay_triangulation_2<Kernel, BoxTds>;
 
+// The points, their vertices and the sweeps, for either triangulation:
+// Derived (the torus or the box) supplies neighbours_of(), which lists a
+// vertex's Delaunay neighbours, and best_centre(), which finds the farthest
+// point near a removed point's former neighbours.
+template <class Derived, class Triangulation>
 class Optimizer {
  public:
-  Optimizer(const PointSet<2>& start, const Domain<2>& domain)
-      : domain_(domain),
-        period_(domain.extent(0)),
-        points_(start),
-        dt_(Delaunay::Iso_rectangle(domain.lo[0], domain.lo[1], domain.hi[0], domain.hi[1])) {
-    handles_.resize(points_.size());
-    Face hint;
-    for (std::size_t i = 0; i < points_.size(); ++i) {
-      const Vertex v = hint == Face() ? dt_.insert(to_cgal(points_[i])) : dt_.insert(to_cgal(points_[i]), hint);
-      v->info() = static_cast<std::uint32_t>(i);
-      handles_[i] = v;
-      hint = v->face();
-    }
-  }
+  using Vertex = typename Triangulation::Vertex_handle;
+  using Face = typename Triangulation::Face_handle;
 
   /// One sweep: every point once, in index order. Returns how many moved.
   /// Reports `done` plus the points visited so far in this sweep.
@@ -106,20 +108,36 @@ class Optimizer {
 
   const PointSet<2>& points() const { return points_; }
 
- private:
-  static Delaunay::Point to_cgal(const Point<2>& p) { return {p[0], p[1]}; }
+ protected:
+  /// Where a removed point may go: `centre` (in the domain), its squared
+  /// distance to the points that define it (`near`, up to three), and a face
+  /// to start the insertion from.
+  struct Centre {
+    Point<2> centre{};
+    double r2 = -1;
+    std::array<std::uint32_t, 3> near{};
+    int near_count = 0;
+    Face hint;
+  };
 
-  void neighbours_of(std::uint32_t i, std::vector<std::uint32_t>& out) const {
-    out.clear();
-    auto n = dt_.adjacent_vertices(handles_[i]), done = n;
-    do out.push_back(dt_.get_original_vertex(n)->info());
-    while (++n != done);
+  Optimizer(const PointSet<2>& start, const Domain<2>& domain, Triangulation dt)
+      : domain_(domain), points_(start), dt_(std::move(dt)) {
+    handles_.resize(points_.size());
+    Face hint;
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      const Vertex v = hint == Face() ? dt_.insert(to_cgal(points_[i])) : dt_.insert(to_cgal(points_[i]), hint);
+      v->info() = static_cast<std::uint32_t>(i);
+      handles_[i] = v;
+      hint = v->face();
+    }
   }
+
+  static typename Triangulation::Point to_cgal(const Point<2>& p) { return {p[0], p[1]}; }
 
   // Squared distance from point i to its nearest other point: the nearest
   // point is a Delaunay neighbour.
   double nearest2(std::uint32_t i, std::vector<std::uint32_t>& neighbours) const {
-    neighbours_of(i, neighbours);
+    self().neighbours_of(i, neighbours);
     double best = std::numeric_limits<double>::infinity();
     for (std::uint32_t j : neighbours)
       if (j != i) best = std::min(best, domain_.distance2(points_[i], points_[j]));
@@ -127,69 +145,28 @@ class Optimizer {
   }
 
   Vertex insert(std::uint32_t i, Face hint) {
-    const Vertex v = dt_.insert(to_cgal(points_[i]), hint);
+    const Vertex v = hint == Face() ? dt_.insert(to_cgal(points_[i])) : dt_.insert(to_cgal(points_[i]), hint);
     v->info() = i;
     handles_[i] = v;
     return v;
-  }
-
-  // The circumcentre of a face relative to its vertex 0, and that vertex.
-  struct Circle {
-    double x = 0, y = 0, r2 = -1;
-    std::uint32_t anchor = 0;
-  };
-  Circle circumcircle(Face f) const {
-    const auto [p0, o0] = dt_.periodic_point(f, 0);
-    double e[2][2];
-    for (int s = 1; s <= 2; ++s) {
-      const auto [q, o] = dt_.periodic_point(f, s);
-      const auto d = o - o0;
-      e[s - 1][0] = q.x() + d.x() * period_ - p0.x();
-      e[s - 1][1] = q.y() + d.y() * period_ - p0.y();
-    }
-    const double a2 = e[0][0] * e[0][0] + e[0][1] * e[0][1], b2 = e[1][0] * e[1][0] + e[1][1] * e[1][1];
-    const double den = 2.0 * (e[0][0] * e[1][1] - e[0][1] * e[1][0]);
-    Circle c;
-    if (!(den != 0.0)) return c;
-    c.x = (e[1][1] * a2 - e[0][1] * b2) / den;
-    c.y = (e[0][0] * b2 - e[1][0] * a2) / den;
-    c.r2 = c.x * c.x + c.y * c.y;
-    c.anchor = dt_.get_original_vertex(f->vertex(0))->info();
-    return c;
   }
 
   bool move(std::uint32_t i, std::vector<std::uint32_t>& neighbours) {
     const double old2 = nearest2(i, neighbours);
     const Point<2> old = points_[i];
     dt_.remove(handles_[i]);
-    // The largest circumcircle among the faces around the former neighbours.
-    Circle best;
-    Face best_face;
-    for (std::uint32_t j : neighbours) {
-      if (j == i) continue;  // a periodic copy of x itself, on a sparse torus
-      auto f = dt_.incident_faces(handles_[j]), done = f;
-      do {
-        const Circle c = circumcircle(f);
-        if (c.r2 > best.r2) {
-          best = c;
-          best_face = f;
-        }
-      } while (++f != done);
-    }
-    if (best.r2 > old2) {
-      const Point<2>& a = points_[best.anchor];
-      const Point<2> centre = domain_.wrap(Point<2>{a[0] + best.x, a[1] + best.y});
-      // Nearest of the face's vertices from the wrapped centre, in the
-      // arithmetic of the acceptance test.
+    const Centre best = self().best_centre(i, neighbours);
+    if (best.r2 > old2 && domain_.contains(best.centre)) {
+      // Nearest of the defining points from the centre, in the arithmetic of
+      // the acceptance test.
       double near2 = std::numeric_limits<double>::infinity();
-      for (int k = 0; k < 3; ++k)
-        near2 =
-            std::min(near2, domain_.distance2(centre, points_[dt_.get_original_vertex(best_face->vertex(k))->info()]));
-      if (near2 > old2 && domain_.contains(centre)) {
-        points_[i] = centre;
-        insert(i, best_face);
+      for (int k = 0; k < best.near_count; ++k)
+        near2 = std::min(near2, domain_.distance2(best.centre, points_[best.near[k]]));
+      if (near2 > old2) {
+        points_[i] = best.centre;
+        insert(i, best.hint);
         // Rounding in the centre can put another point a hair nearer than
-        // the face's vertices: keep the move only if it really gained.
+        // the defining ones: keep the move only if it really gained.
         std::vector<std::uint32_t> around;
         if (nearest2(i, around) > old2) return true;
         dt_.remove(handles_[i]);
@@ -198,22 +175,205 @@ class Optimizer {
         return false;
       }
     }
-    insert(i, best_face == Face() ? Face() : best_face);
+    insert(i, best.hint);
     return false;
   }
 
+  const Derived& self() const { return static_cast<const Derived&>(*this); }
+  Derived& self() { return static_cast<Derived&>(*this); }
+
   Domain<2> domain_;
-  double period_;
   PointSet<2> points_;
-  Delaunay dt_;
+  Triangulation dt_;
   std::vector<Vertex> handles_;
+};
+
+// The square torus: CGAL's periodic triangulation, each point stored once.
+class TorusOptimizer : public Optimizer<TorusOptimizer, PeriodicDelaunay> {
+  using Base = Optimizer<TorusOptimizer, PeriodicDelaunay>;
+  friend Base;
+
+ public:
+  TorusOptimizer(const PointSet<2>& start, const Domain<2>& domain)
+      : Base(start, domain,
+             PeriodicDelaunay(PeriodicDelaunay::Iso_rectangle(domain.lo[0], domain.lo[1], domain.hi[0], domain.hi[1]))),
+        period_(domain.extent(0)) {}
+
+ private:
+  void neighbours_of(std::uint32_t i, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    auto n = dt_.adjacent_vertices(handles_[i]), done = n;
+    do out.push_back(dt_.get_original_vertex(n)->info());
+    while (++n != done);
+  }
+
+  // The largest circumcircle among the faces around the former neighbours,
+  // its centre computed relative to the face's vertex 0 from the faces'
+  // periodic offsets, then wrapped into the domain.
+  Centre best_centre(std::uint32_t i, const std::vector<std::uint32_t>& neighbours) const {
+    Centre best;
+    for (std::uint32_t j : neighbours) {
+      if (j == i) continue;  // a periodic copy of x itself, on a sparse torus
+      auto f = dt_.incident_faces(handles_[j]), done = f;
+      do {
+        const auto [p0, o0] = dt_.periodic_point(f, 0);
+        double e[2][2];
+        for (int s = 1; s <= 2; ++s) {
+          const auto [q, o] = dt_.periodic_point(f, s);
+          const auto d = o - o0;
+          e[s - 1][0] = q.x() + d.x() * period_ - p0.x();
+          e[s - 1][1] = q.y() + d.y() * period_ - p0.y();
+        }
+        const double a2 = e[0][0] * e[0][0] + e[0][1] * e[0][1], b2 = e[1][0] * e[1][0] + e[1][1] * e[1][1];
+        const double den = 2.0 * (e[0][0] * e[1][1] - e[0][1] * e[1][0]);
+        if (den != 0.0) {
+          const double x = (e[1][1] * a2 - e[0][1] * b2) / den, y = (e[0][0] * b2 - e[1][0] * a2) / den;
+          if (x * x + y * y > best.r2) {
+            best.r2 = x * x + y * y;
+            best.centre = {p0.x() + x, p0.y() + y};
+            best.hint = f;
+            for (int k = 0; k < 3; ++k) best.near[k] = dt_.get_original_vertex(f->vertex(k))->info();
+            best.near_count = 3;
+          }
+        }
+      } while (++f != done);
+    }
+    if (best.r2 >= 0) best.centre = domain_.wrap(best.centre);
+    return best;
+  }
+
+  double period_;
+};
+
+// A box: CGAL's Delaunay triangulation of the plane, whose Voronoi cells the
+// box clips. The farthest point of the box from a set is a Voronoi vertex
+// inside it, a point where a Voronoi edge meets a side, or a corner; the
+// local search takes all three around the former neighbours. A side or
+// corner point x belongs to the Voronoi cell of neighbour j when no Delaunay
+// neighbour of j is nearer to x than j (a cell is bounded by its Delaunay
+// neighbours' bisectors).
+class BoxOptimizer : public Optimizer<BoxOptimizer, BoxDelaunay> {
+  using Base = Optimizer<BoxOptimizer, BoxDelaunay>;
+  friend Base;
+
+ public:
+  BoxOptimizer(const PointSet<2>& start, const Domain<2>& domain) : Base(start, domain, BoxDelaunay()) {}
+
+ private:
+  void neighbours_of(std::uint32_t i, std::vector<std::uint32_t>& out) const {
+    out.clear();
+    if (dt_.dimension() < 2) {
+      // Every point on one line (a few points, or a degenerate start): all of them.
+      for (std::uint32_t j = 0; j < points_.size(); ++j)
+        if (j != i) out.push_back(j);
+      return;
+    }
+    auto n = dt_.incident_vertices(handles_[i]), done = n;
+    do
+      if (!dt_.is_infinite(n)) out.push_back(n->info());
+    while (++n != done);
+  }
+
+  // Squared distance from x to point j if x lies in j's Voronoi cell (no
+  // point of `around`, j's Delaunay neighbours, is nearer, up to rounding:
+  // x may lie on the bisector of j and one of them), else -1.
+  double in_cell2(const Point<2>& x, std::uint32_t j, const std::vector<std::uint32_t>& around) const {
+    const double own = domain_.distance2(x, points_[j]);
+    for (std::uint32_t m : around)
+      if (domain_.distance2(x, points_[m]) < own * (1.0 - 1e-12)) return -1;
+    return own;
+  }
+
+  void consider(Centre& best, const Point<2>& x, double r2, std::uint32_t j, int k, Face hint) const {
+    if (!(r2 > best.r2)) return;
+    best.r2 = r2;
+    best.centre = x;
+    // A side of the box at hi is outside [lo, hi): the largest double below it.
+    for (int a = 0; a < 2; ++a)
+      if (best.centre[a] >= domain_.hi[a]) best.centre[a] = std::nextafter(domain_.hi[a], domain_.lo[a]);
+    best.near = {j, static_cast<std::uint32_t>(k < 0 ? j : k), j};
+    best.near_count = k < 0 ? 1 : 2;
+    best.hint = hint;
+  }
+
+  Centre best_centre(std::uint32_t i, const std::vector<std::uint32_t>& neighbours) {
+    Centre best;
+    const Point<2> corners[4] = {{domain_.lo[0], domain_.lo[1]},
+                                 {domain_.hi[0], domain_.lo[1]},
+                                 {domain_.lo[0], domain_.hi[1]},
+                                 {domain_.hi[0], domain_.hi[1]}};
+    if (dt_.dimension() < 2) {
+      // The rest lie on one line: the farthest corner from all of them.
+      std::vector<std::uint32_t> rest;
+      neighbours_of(i, rest);
+      for (const Point<2>& c : corners) {
+        double near2 = std::numeric_limits<double>::infinity();
+        for (std::uint32_t j : rest) near2 = std::min(near2, domain_.distance2(c, points_[j]));
+        if (near2 > best.r2) {
+          consider(best, c, near2, i, -1, Face());
+          best.near_count = 0;  // the scan above was the check
+        }
+      }
+      return best;
+    }
+    std::vector<std::uint32_t> around;
+    for (std::uint32_t j : neighbours) {
+      const Vertex v = handles_[j];
+      // Voronoi vertices: circumcentres of the finite faces, inside the box
+      // (a face's circumcircle is empty, so its radius is the distance).
+      auto f = dt_.incident_faces(v), done = f;
+      do {
+        if (dt_.is_infinite(f)) continue;
+        const Point<2> p0 = points_[f->vertex(0)->info()];
+        const Point<2> q1 = points_[f->vertex(1)->info()], q2 = points_[f->vertex(2)->info()];
+        const double e0x = q1[0] - p0[0], e0y = q1[1] - p0[1], e1x = q2[0] - p0[0], e1y = q2[1] - p0[1];
+        const double a2 = e0x * e0x + e0y * e0y, b2 = e1x * e1x + e1y * e1y;
+        const double den = 2.0 * (e0x * e1y - e0y * e1x);
+        if (den == 0.0) continue;
+        const double x = (e1y * a2 - e0y * b2) / den, y = (e0x * b2 - e1x * a2) / den;
+        const Point<2> c{p0[0] + x, p0[1] + y};
+        if (x * x + y * y > best.r2 && c[0] >= domain_.lo[0] && c[0] <= domain_.hi[0] && c[1] >= domain_.lo[1] &&
+            c[1] <= domain_.hi[1]) {
+          consider(best, c, x * x + y * y, f->vertex(0)->info(), static_cast<int>(f->vertex(1)->info()), f);
+          best.near[2] = f->vertex(2)->info();
+          best.near_count = 3;
+        }
+      } while (++f != done);
+      // Voronoi edges meeting a side: the point of the side equidistant from
+      // j and a neighbour k, if it lies in j's cell; and the corners in j's cell.
+      neighbours_of(j, around);
+      const Point<2>& pj = points_[j];
+      for (std::uint32_t k : around) {
+        const Point<2>& pk = points_[k];
+        const double mid[2] = {0.5 * (pj[0] + pk[0]), 0.5 * (pj[1] + pk[1])};
+        const double d[2] = {pk[0] - pj[0], pk[1] - pj[1]};
+        for (int a = 0; a < 2; ++a) {
+          const int b = 1 - a;
+          if (d[b] == 0.0) continue;  // the bisector runs along this side
+          for (const double side : {domain_.lo[a], domain_.hi[a]}) {
+            Point<2> x;
+            x[a] = side;
+            x[b] = mid[b] - d[a] * (side - mid[a]) / d[b];
+            if (!(x[b] >= domain_.lo[b] && x[b] <= domain_.hi[b])) continue;
+            if (domain_.distance2(x, pj) <= best.r2) continue;
+            const double r2 = in_cell2(x, j, around);
+            if (r2 > best.r2) consider(best, x, r2, j, static_cast<int>(k), v->face());
+          }
+        }
+      }
+      for (const Point<2>& c : corners) {
+        if (domain_.distance2(c, pj) <= best.r2) continue;
+        const double r2 = in_cell2(c, j, around);
+        if (r2 > best.r2) consider(best, c, r2, j, -1, v->face());
+      }
+    }
+    return best;
+  }
 };
 
 void validate(const PointSet<2>& start, const Domain<2>& domain, const FpoParams& params) {
   domain.validate();
-  if (!domain.periodic)
-    throw InvalidArgument("fpo: needs a torus (--torus): the optimization runs on a periodic Delaunay triangulation");
-  if (domain.extent(0) != domain.extent(1))
+  if (domain.periodic && domain.extent(0) != domain.extent(1))
     throw InvalidArgument("fpo: the torus must be square (CGAL's periodic triangulation), got periods " +
                           detail::format_number(domain.extent(0)) + " and " + detail::format_number(domain.extent(1)));
   if (params.sweeps < 1) throw InvalidArgument("fpo: sweeps must be at least 1, got " + std::to_string(params.sweeps));
@@ -239,16 +399,15 @@ void validate(const PointSet<2>& start, const Domain<2>& domain, const FpoParams
   }
 }
 
-}  // namespace
-
-FpoResult fpo_optimize(const PointSet<2>& start, const Domain<2>& domain, const FpoParams& params) {
-  validate(start, domain, params);
-  Optimizer optimizer(start, domain);
+// The sweeps and the stop rule, on either optimizer (by reference: the
+// vertex handles point into its triangulation).
+template <class Sweeper>
+FpoResult optimize(Sweeper& optimizer, const FpoParams& params) {
   FpoResult result;
   result.sweeps.push_back(optimizer.measure());
   // Point visits out of the sweep budget: a run that converges early ends
   // with a jump to the total.
-  const auto n = static_cast<double>(start.size());
+  const auto n = static_cast<double>(optimizer.points().size());
   ProgressReporter progress(params.progress, n * params.sweeps);
   for (int s = 0; s < params.sweeps; ++s) {
     const std::size_t moved = optimizer.sweep(progress, n * s);
@@ -261,6 +420,18 @@ FpoResult fpo_optimize(const PointSet<2>& start, const Domain<2>& domain, const 
   progress.finish();
   result.points = optimizer.points();
   return result;
+}
+
+}  // namespace
+
+FpoResult fpo_optimize(const PointSet<2>& start, const Domain<2>& domain, const FpoParams& params) {
+  validate(start, domain, params);
+  if (domain.periodic) {
+    TorusOptimizer torus(start, domain);
+    return optimize(torus, params);
+  }
+  BoxOptimizer box(start, domain);
+  return optimize(box, params);
 }
 
 FpoResult fpo(std::uint64_t count, const Domain<2>& domain, const FpoParams& params, std::uint64_t seed) {

@@ -622,7 +622,7 @@ class WeiSampler : public WeiPasses<WeiSampler<D>> {
     constexpr int kChildren = 1 << D;
     std::vector<std::uint8_t> masks(count);
     const int parent_side = 1 << (level - 1);
-    parallel_for(0, count, 256, params_.threads, [&](std::size_t range_begin, std::size_t range_end) {
+    const auto refine_range = [&](std::size_t range_begin, std::size_t range_end) {
       std::vector<Point<D>> near;
       std::uint32_t gathered = std::numeric_limits<std::uint32_t>::max();
       for (std::size_t p = range_begin; p != range_end; ++p) {
@@ -643,7 +643,14 @@ class WeiSampler : public WeiPasses<WeiSampler<D>> {
         }
         masks[p] = mask;
       }
-    });
+    };
+    // Level 1 reads every level-0 cell and places no sample: between batches
+    // this thread polls for a stop.
+    constexpr std::size_t kParentsPerBatch = std::size_t{1} << 18;
+    for (std::size_t batch = 0; batch < count; batch += kParentsPerBatch) {
+      parallel_for(batch, std::min(count, batch + kParentsPerBatch), 256, params_.threads, refine_range);
+      progress_.poll();
+    }
     // The new active cells, sorted by phase group (a counting sort, written in
     // place), in parent order within a group.
     group_begin_.assign(group_count() + 1, 0);
