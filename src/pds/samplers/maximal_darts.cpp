@@ -224,11 +224,14 @@ class MaximalDartsSampler {
     return n;
   }
 
+  /// Runs body(k, chunk) over the chunks on the pool, or on this thread when
+  /// the sweep's work is the open sub-cells and they are few: the deep levels
+  /// hold a few thousand, less work than waking the pool for each sweep (the
+  /// output does not depend on it). Level 0's sweeps, and the refinement
+  /// that splits level 0's open cells, work on the grid.
   template <class Body>
-  void for_chunks(Body&& body) {
-    // The deep levels hold a few thousand sub-cells: less work than waking
-    // the pool for each sweep (the output does not depend on it).
-    const int threads = level_ > 0 && open_units() < kSerialUnits ? 1 : threads_;
+  void for_chunks(bool on_units, Body&& body) {
+    const int threads = on_units && open_units() < kSerialUnits ? 1 : threads_;
     parallel_for(0, chunks_.size(), 1, threads, [&](std::size_t b, std::size_t e) {
       for (std::size_t k = b; k < e; ++k) body(k, chunks_[k]);
     });
@@ -325,7 +328,7 @@ class MaximalDartsSampler {
     const PoissonTable poisson(length);
     const std::uint64_t key = window_key(window);
     // 1. Darts, filtered against the samples of earlier windows.
-    for_chunks([&](std::size_t, Chunk& chunk) {
+    for_chunks(level_ > 0, [&](std::size_t, Chunk& chunk) {
       chunk.candidates.clear();
       chunk.closed.clear();
       if (level_ == 0) {
@@ -348,7 +351,7 @@ class MaximalDartsSampler {
                       " candidates in one chunk of the grid");
     });
     // 2. Publish: each cell with candidates points at its first one.
-    for_chunks([&](std::size_t k, Chunk& chunk) {
+    for_chunks(level_ > 0, [&](std::size_t k, Chunk& chunk) {
       for (const std::uint32_t cell : chunk.closed) state_[cell] = kCovered;
       const auto& cands = chunk.candidates;
       for (std::size_t j = 0; j < cands.size(); ++j)
@@ -356,7 +359,7 @@ class MaximalDartsSampler {
           state_[cands[j].cell] = kMarker - static_cast<std::int32_t>((j << kChunkBits) | k);
     });
     // 3. Decide.
-    for_chunks([&](std::size_t, Chunk& chunk) {
+    for_chunks(level_ > 0, [&](std::size_t, Chunk& chunk) {
       std::size_t kept = 0;
       for (Candidate& d : chunk.candidates) kept += decide(d, 0) ? 1 : 0;
       chunk.kept = kept;
@@ -369,7 +372,7 @@ class MaximalDartsSampler {
       reporter_.update(static_cast<double>(total));  // between parallel phases: may throw Cancelled
     }
     samples_.resize(total);
-    for_chunks([&](std::size_t, Chunk& chunk) {
+    for_chunks(level_ > 0, [&](std::size_t, Chunk& chunk) {
       std::size_t next = chunk.base;
       for (const Candidate& d : chunk.candidates) {
         std::int32_t& state = state_[d.cell];
@@ -456,7 +459,7 @@ class MaximalDartsSampler {
       }
       return least2 < r2_;
     });
-    for_chunks([&](std::size_t, Chunk& chunk) {
+    for_chunks(parent_level > 0, [&](std::size_t, Chunk& chunk) {
       std::vector<Unit> children;
       std::vector<std::array<double, D>> near;  // nearby samples' images, relative to the cell's lower corner
       chunk.closed.clear();
