@@ -262,12 +262,9 @@ class BoxOptimizer : public Optimizer<BoxOptimizer, BoxDelaunay> {
  private:
   void neighbours_of(std::uint32_t i, std::vector<std::uint32_t>& out) const {
     out.clear();
-    if (dt_.dimension() < 2) {
-      // Every point on one line (a few points, or a degenerate start): all of them.
-      for (std::uint32_t j = 0; j < points_.size(); ++j)
-        if (j != i) out.push_back(j);
-      return;
-    }
+    if (dt_.dimension() < 1) return;  // the only point
+    // In dimension 1 (every point on one line) the circulator visits the
+    // point's neighbours along the line.
     auto n = dt_.incident_vertices(handles_[i]), done = n;
     do
       if (!dt_.is_infinite(n)) out.push_back(n->info());
@@ -303,12 +300,12 @@ class BoxOptimizer : public Optimizer<BoxOptimizer, BoxDelaunay> {
                                  {domain_.lo[0], domain_.hi[1]},
                                  {domain_.hi[0], domain_.hi[1]}};
     if (dt_.dimension() < 2) {
-      // The rest lie on one line: the farthest corner from all of them.
-      std::vector<std::uint32_t> rest;
-      neighbours_of(i, rest);
+      // The rest lie on one line (a start on a line, or two points): the
+      // farthest corner from all of them, found by a scan.
       for (const Point<2>& c : corners) {
         double near2 = std::numeric_limits<double>::infinity();
-        for (std::uint32_t j : rest) near2 = std::min(near2, domain_.distance2(c, points_[j]));
+        for (std::uint32_t j = 0; j < points_.size(); ++j)
+          if (j != i) near2 = std::min(near2, domain_.distance2(c, points_[j]));
         if (near2 > best.r2) {
           consider(best, c, near2, i, -1, Face());
           best.near_count = 0;  // the scan above was the check
