@@ -9,7 +9,7 @@ JOBS ?= $(shell nproc)
 PDS = $(BUILD)/apps/pds/pds
 DEMO_DIR ?= out/demo
 
-.PHONY: all deps build demo test main-tests bench san-build sanitize fuzz clean
+.PHONY: all deps build demo test bench san-build sanitize fuzz clean
 
 all: build
 
@@ -22,7 +22,7 @@ LAUNCHER = $(if $(shell command -v ccache),-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 
 build: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(LAUNCHER) >/dev/null
-	@MAKEFLAGS= cmake --build $(BUILD) -j $(JOBS)
+	@cmake --build $(BUILD) -j $(JOBS)
 
 # The Python module goes where Debian's /usr/bin/python3 finds it
 # (/usr/local/lib/python3.X/dist-packages; docs/python.md).
@@ -31,19 +31,11 @@ demo: build
 	@bash scripts/demo.sh $(PDS) $(DEMO_DIR)
 
 # Every test in the main (g++) build, then the clang lane: the tests again
-# under ASan and UBSan, and each fuzz target for FUZZ_SECONDS. The main
-# build's tests run while the clang lane compiles, each filling the other's
-# idle moments (configure steps, links, serial tests); each one's output
-# comes whole when it ends.
+# under ASan and UBSan, and each fuzz target for FUZZ_SECONDS.
 test: build
-	@$(MAKE) -j 2 --output-sync=recurse main-tests san-build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 	@$(MAKE) sanitize
 	@$(MAKE) fuzz
-
-# MAKEFLAGS= : the nested builds (cmake --build, the consumer tests) take
-# their own -j, not this make's jobserver.
-main-tests: build
-	@cd $(BUILD) && MAKEFLAGS= ctest --output-on-failure -j $(JOBS)
 
 bench: build
 	@$(BUILD)/bench/pds_bench
@@ -71,7 +63,7 @@ san-build: deps
 	@CC=clang CXX=clang++ cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo $(LAUNCHER) \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
 	  -DCMAKE_CXX_FLAGS="$(SAN_FLAGS)" -DPDS_BUILD_FUZZ=ON -DPDS_BUILD_BENCH=OFF -DPDS_BUILD_PYTHON=OFF -DPDS_BUILD_MPI=OFF >/dev/null
-	@MAKEFLAGS= cmake --build $(SAN_BUILD) -j $(JOBS)
+	@cmake --build $(SAN_BUILD) -j $(JOBS)
 
 # Left out of the clang lane: the consumers (they link the instrumented
 # libraries into uninstrumented programs), the generated-docs checks (not
