@@ -69,6 +69,17 @@ using PeriodicDelaunay = CGAL::Periodic_2_Delaunay_triangulation_2<Traits, Perio
 using BoxTds = CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Kernel>>;
 using BoxDelaunay = CGAL::Delaunay_triangulation_2<Kernel, BoxTds>;
 
+// The circumcentre of a triangle relative to its first vertex, from the
+// other two vertices' offsets (e0, e1) from it; false for a flat triangle.
+bool circumcentre_offset(double e0x, double e0y, double e1x, double e1y, double& x, double& y) {
+  const double a2 = e0x * e0x + e0y * e0y, b2 = e1x * e1x + e1y * e1y;
+  const double den = 2.0 * (e0x * e1y - e0y * e1x);
+  if (den == 0.0) return false;
+  x = (e1y * a2 - e0y * b2) / den;
+  y = (e0x * b2 - e1x * a2) / den;
+  return true;
+}
+
 // The points, their vertices and the sweeps, for either triangulation:
 // Derived (the torus or the box) supplies neighbours_of(), which lists a
 // vertex's Delaunay neighbours, and best_centre(), which finds the farthest
@@ -224,10 +235,8 @@ class TorusOptimizer : public Optimizer<TorusOptimizer, PeriodicDelaunay> {
           e[s - 1][0] = q.x() + d.x() * period_ - p0.x();
           e[s - 1][1] = q.y() + d.y() * period_ - p0.y();
         }
-        const double a2 = e[0][0] * e[0][0] + e[0][1] * e[0][1], b2 = e[1][0] * e[1][0] + e[1][1] * e[1][1];
-        const double den = 2.0 * (e[0][0] * e[1][1] - e[0][1] * e[1][0]);
-        if (den != 0.0) {
-          const double x = (e[1][1] * a2 - e[0][1] * b2) / den, y = (e[0][0] * b2 - e[1][0] * a2) / den;
+        double x, y;
+        if (circumcentre_offset(e[0][0], e[0][1], e[1][0], e[1][1], x, y)) {
           if (x * x + y * y > best.r2) {
             best.r2 = x * x + y * y;
             best.centre = {p0.x() + x, p0.y() + y};
@@ -323,11 +332,8 @@ class BoxOptimizer : public Optimizer<BoxOptimizer, BoxDelaunay> {
         if (dt_.is_infinite(f)) continue;
         const Point<2> p0 = points_[f->vertex(0)->info()];
         const Point<2> q1 = points_[f->vertex(1)->info()], q2 = points_[f->vertex(2)->info()];
-        const double e0x = q1[0] - p0[0], e0y = q1[1] - p0[1], e1x = q2[0] - p0[0], e1y = q2[1] - p0[1];
-        const double a2 = e0x * e0x + e0y * e0y, b2 = e1x * e1x + e1y * e1y;
-        const double den = 2.0 * (e0x * e1y - e0y * e1x);
-        if (den == 0.0) continue;
-        const double x = (e1y * a2 - e0y * b2) / den, y = (e0x * b2 - e1x * a2) / den;
+        double x, y;
+        if (!circumcentre_offset(q1[0] - p0[0], q1[1] - p0[1], q2[0] - p0[0], q2[1] - p0[1], x, y)) continue;
         const Point<2> c{p0[0] + x, p0[1] + y};
         if (x * x + y * y > best.r2 && c[0] >= domain_.lo[0] && c[0] <= domain_.hi[0] && c[1] >= domain_.lo[1] &&
             c[1] <= domain_.hi[1]) {
