@@ -51,10 +51,10 @@ struct PointCloud {
 
   template <int D>
   static PointCloud from(const PointSet<D>& points) {
-    PointCloud cloud{D, {}};
-    cloud.coords.reserve(points.size() * D);
-    for (const auto& p : points) cloud.coords.insert(cloud.coords.end(), p.begin(), p.end());
-    return cloud;
+    // One block copy: a PointSet<D> is D doubles a point, back to back.
+    static_assert(sizeof(Point<D>) == D * sizeof(double));
+    const double* first = points.empty() ? nullptr : points.front().data();
+    return PointCloud{D, std::vector<double>(first, first + points.size() * D)};
   }
 
   /// The points as a typed set; requires dim == D.

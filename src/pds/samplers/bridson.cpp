@@ -23,12 +23,13 @@
 // Complexity: O(k N) candidate checks, each a fixed number of cells (the own
 // cell and 15 neighbours in 2D, and 90 in 3D, for the usual reach of 2; typically
 // the first 8, nearest cells first). Memory: the grid, about 3 cells a sample
-// in 2D and 5 in 3D.
+// in 2D (16 bytes each) and 9 in 3D (4 bytes each), and the output.
 //
 // Speed (why not pds::Grid): this is the hot loop of the project, so the grid
-// here is specialised (docs/bridson.md, "Speed"). Cells store the sample's
-// coordinates directly (NaN when empty, which compares as "not closer", so
-// the scan has no occupancy branch); a margin of `reach` cells around the
+// here is specialised (docs/bridson.md, "Speed"). In 2D cells store the
+// sample's coordinates directly, in 3D its index in the output (BridsonGrid::
+// kIndexed says why); an empty cell reads as NaN coordinates, which compare
+// as "not closer", so the scan has no occupancy branch; a margin of `reach` cells around the
 // domain removes bounds checks and, on a torus, holds copies of the samples
 // near the opposite faces (their original coordinates, so the distance is the
 // domain's min-image formula); away from the faces the min-image correction
@@ -60,6 +61,7 @@
 #include "pds/samplers/random.h"
 #include "pds/samplers/sizing.h"
 #include "annulus_offsets.h"
+#include "mapped_pages.h"
 #include "pds/detail/instantiate.h"
 
 namespace pds {
@@ -67,8 +69,20 @@ namespace {
 
 template <int D, bool Periodic>
 class BridsonGrid {
+  // What a cell holds. In 2D the sample's coordinates (NaN when empty): the
+  // scan reads them with no indirection, twice as fast as through an index
+  // at 10^6. In 3D, with nine cells a sample, coordinates made the grid ten
+  // times the output (224 MB at 10^6); there a cell holds the sample's index
+  // in the store (0, the NaN marker, when empty): a sixth of the memory and
+  // no slower (measured, docs/bridson.md).
+  static constexpr bool kIndexed = D >= 3;
+  using Cell = std::conditional_t<kIndexed, std::uint32_t, Point<D>>;
+
  public:
-  BridsonGrid(const Domain<D>& domain, double radius) : radius2_(radius * radius) {
+  /// `store` holds the samples, store[0] the empty marker (NaN); a cell
+  /// holds its sample's index there.
+  BridsonGrid(const Domain<D>& domain, double radius, const PointSet<D>& store)
+      : radius2_(radius * radius), store_(store) {
     // Slightly under r/sqrt(D) so that two samples r apart can never share a
     // cell, whatever the rounding of the cell arithmetic.
     const double max_edge = radius / std::sqrt(static_cast<double>(D)) * (1.0 - 1e-9);
@@ -125,9 +139,15 @@ class BridsonGrid {
       padded_[i] = padded[i];
       stride_[i] = layout.stride(i);
     }
-    Point<D> empty;
-    empty.fill(std::numeric_limits<double>::quiet_NaN());
-    grid_.assign(layout.size(), empty);
+    // Huge pages where offered (mapped_pages.h): the front sweeps over
+    // every cell, and with coordinates every cell is written here (a tenth
+    // of the 2D run at 10^6 went to 4 KiB page faults). A zero index is empty.
+    grid_ = detail::map_zeroed<Cell>(layout.size(), detail::Pages::kHuge);
+    if constexpr (!kIndexed) {
+      Point<D> empty;
+      empty.fill(std::numeric_limits<double>::quiet_NaN());
+      std::fill_n(grid_.get(), layout.size(), empty);
+    }
     build_offsets(layout, radius);
     // Offsets of the rows (along axis 0) that prefetch_around() fetches, axis
     // 1 fastest.
@@ -175,17 +195,24 @@ class BridsonGrid {
     }
     // A fixed number of lines a row, so that the loops are predicted; a
     // prefetch never faults, so lines past either end of the grid are harmless.
-    constexpr int kLines = ((2 * kPrefetchReach + 1) * static_cast<int>(sizeof(Point<D>)) + 63) / 64 + 1;
-    const std::uintptr_t base = reinterpret_cast<std::uintptr_t>(grid_.data());
+    constexpr int kLines = ((2 * kPrefetchReach + 1) * static_cast<int>(sizeof(Cell)) + 63) / 64 + 1;
+    const std::uintptr_t base = reinterpret_cast<std::uintptr_t>(grid_.get());
     for (std::ptrdiff_t row : prefetch_rows_) {
-      const std::uintptr_t first = base + static_cast<std::uintptr_t>(cell + row - kPrefetchReach) * sizeof(Point<D>);
+      const std::uintptr_t first =
+          base + static_cast<std::uintptr_t>(cell + row - kPrefetchReach) * sizeof(Cell);
       for (int line = 0; line < kLines; ++line) __builtin_prefetch(reinterpret_cast<const char*>(first + 64 * line));
     }
   }
 
-  void insert(const Point<D>& p, std::size_t cell) {
-    grid_[cell] = p;
-    if constexpr (Periodic) copy_to_margin(p, cell);
+  /// Files store[index] in its cell (from is_free()).
+  void insert(const Point<D>& p, std::size_t cell, std::size_t index) {
+    Cell value;
+    if constexpr (kIndexed)
+      value = static_cast<std::uint32_t>(index);  // fewer than kMaxGridCells < 2^32 samples
+    else
+      value = p;
+    grid_[cell] = value;
+    if constexpr (Periodic) copy_to_margin(value, cell);
   }
 
  private:
@@ -202,13 +229,14 @@ class BridsonGrid {
                                    const std::vector<std::ptrdiff_t>& offsets) const {
     typedef double Pair __attribute__((vector_size(16)));
     typedef std::int64_t Mask __attribute__((vector_size(16)));
-    const Point<D>* base = grid_.data() + cell;
+    const Cell* base = grid_.get() + cell;
+    const Point<D>* store = store_.data();
     const Pair radius2 = {radius2_, radius2_};
     for (std::size_t j = 0; j < offsets.size(); j += kBlock) {
       Mask closer = {0, 0};
       for (std::size_t t = j; t < j + kBlock; t += 2) {
-        const Point<D>& a = base[offsets[t]];
-        const Point<D>& b = base[offsets[t + 1]];
+        const Point<D>& a = sample_at(base + offsets[t], store);
+        const Point<D>& b = sample_at(base + offsets[t + 1], store);
         Pair s;
         for (int i = 0; i < D; ++i) {
           Pair d = Pair{a[i], b[i]} - p[i];
@@ -225,6 +253,14 @@ class BridsonGrid {
       if (closer[0] | closer[1]) return false;
     }
     return true;
+  }
+
+  // The sample a cell holds (NaN coordinates when empty).
+  [[gnu::always_inline]] static const Point<D>& sample_at(const Cell* cell, [[maybe_unused]] const Point<D>* store) {
+    if constexpr (kIndexed)
+      return store[*cell];
+    else
+      return *cell;
   }
 
   // For each sub-cell (half of the cell along each axis) the neighbour cells
@@ -291,7 +327,7 @@ class BridsonGrid {
 
   // On a torus, the margin cells mirror the cells of the opposite faces: a
   // sample is written to every padded position congruent to its cell.
-  void copy_to_margin(const Point<D>& p, std::size_t cell) {
+  void copy_to_margin(const Cell& value, std::size_t cell) {
     // At most 1 + 2 * reach positions an axis (a period of one cell).
     std::array<std::array<int, 2 * kMaxReach + 1>, D> positions{};
     std::array<int, D> count{};
@@ -301,9 +337,9 @@ class BridsonGrid {
     }
     std::array<int, D> at{};
     while (true) {
-      std::size_t index = 0;
-      for (int i = 0; i < D; ++i) index += static_cast<std::size_t>(positions[i][at[i]]) * stride_[i];
-      grid_[index] = p;
+      std::size_t at_index = 0;
+      for (int i = 0; i < D; ++i) at_index += static_cast<std::size_t>(positions[i][at[i]]) * stride_[i];
+      grid_[at_index] = value;
       int axis = 0;
       while (axis < D && ++at[axis] == count[axis]) at[axis++] = 0;
       if (axis == D) break;
@@ -316,7 +352,8 @@ class BridsonGrid {
   std::array<unsigned, D> interior_cells_{};
   std::array<std::size_t, D> stride_{};  // the padded grid's
   int reach_ = 1;
-  std::vector<Point<D>> grid_;
+  const PointSet<D>& store_;
+  detail::MappedArray<Cell> grid_;
   std::array<std::vector<std::ptrdiff_t>, (1u << D)> offsets_;
   std::vector<std::ptrdiff_t> prefetch_rows_;
 };
@@ -328,10 +365,10 @@ class BridsonGrid {
 template <int D>
 class ConflictGrid {
  public:
-  ConflictGrid(const Domain<D>& domain, double radius)
+  ConflictGrid(const Domain<D>& domain, double radius, const PointSet<D>&)
       : grid_(Grid<D>::for_conflicts(domain, radius)), radius_(radius) {}
   bool is_free(const Point<D>& p, std::size_t&) const { return !grid_.any_closer_than(p, radius_); }
-  void insert(const Point<D>& p, std::size_t) { grid_.insert(p); }
+  void insert(const Point<D>& p, std::size_t, std::size_t) { grid_.insert(p); }
   void prefetch_around(const Point<D>&) const {}
 
  private:
@@ -367,11 +404,31 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
   ProgressReporter reporter(progress, typical_count(sizing_volume(domain, radius), radius, D));
   const int k = params.k;
   const bool surface = params.surface;
-  std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius);
   Rng rng(seed);
   bool short_reach = true;
   for (int i = 0; i < D; ++i) short_reach &= 2.0 * radius < domain.extent(i);
+  // The samples, after points[0]: the grid's empty marker, removed at the
+  // end. Room for the usual count at once (Bridson's sets hold about half
+  // the densest packing's points; 3/4 of it is reserved, pages untouched
+  // until written): growing by doubling copied the samples about twice over
+  // and held the old and the new block together at the peak.
+  // (After the grid, which refuses a radius too small for the domain.)
   PointSet<D> points;
+  std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius, points);
+  points.reserve(static_cast<std::size_t>(0.75 * packing_count(sizing_volume(domain, radius), radius, D)) + 64);
+  points.push_back(Point<D>{});
+  points[0].fill(std::numeric_limits<double>::quiet_NaN());
+  const auto add = [&](const Point<D>& c, std::size_t at) __attribute__((always_inline)) {
+    points.push_back(c);
+    grid.insert(c, at, points.size() - 1);
+    const std::size_t count = points.size() - 1;
+    if (count % kReportEvery == 0) reporter.update(static_cast<double>(count));
+  };
+  const auto finish = [&] {
+    reporter.finish();
+    points.erase(points.begin());
+    return std::move(points);
+  };
   // The active list holds coordinates, not indices: one memory access less
   // for each random pick.
   PointSet<D> active;
@@ -393,8 +450,7 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
   std::size_t cell = 0;
   const Point<D> first = uniform_point(rng, domain);
   grid.is_free(first, cell);
-  grid.insert(first, cell);
-  points.push_back(first);
+  add(first, cell);
   active.push_back(first);
   // The next candidate around `centre` in c: wrapped into a torus; false
   // where it leaves a box.
@@ -442,15 +498,12 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
       for (int attempt = 0; attempt < tries; ++attempt) {
         Point<D> c;
         if (next_candidate(centre, c) && grid.is_free(c, cell)) {
-          grid.insert(c, cell);
+          add(c, cell);
           active.push_back(c);
-          points.push_back(c);
-          if (points.size() % kReportEvery == 0) reporter.update(static_cast<double>(points.size()));
         }
       }
     }
-    reporter.finish();
-    return points;
+    return finish();
   }
   while (!active.empty()) {
     const std::size_t slot = rng.below(active.size());
@@ -461,10 +514,8 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
       Point<D> c;
       if (!next_candidate(centre, c)) continue;
       if (grid.is_free(c, cell)) {
-        grid.insert(c, cell);
+        add(c, cell);
         active.push_back(c);
-        points.push_back(c);
-        if (points.size() % kReportEvery == 0) reporter.update(static_cast<double>(points.size()));
         found = true;
         break;
       }
@@ -474,8 +525,7 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
       active.pop_back();
     }
   }
-  reporter.finish();
-  return points;
+  return finish();
 }
 
 template <int D>

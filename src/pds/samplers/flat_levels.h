@@ -58,14 +58,6 @@
 // most 128 MiB: coarser cells beyond), mapped at once; the blocks' bits 4
 // bytes a block.
 
-// Elsewhere than POSIX systems the grids come zeroed from calloc instead
-// (the same bytes out, without the lazy pages).
-#if defined(__unix__) || defined(__APPLE__)
-#include <sys/mman.h>
-#define PDS_FLAT_LEVELS_MMAP 1
-#else
-#define PDS_FLAT_LEVELS_MMAP 0
-#endif
 
 #include <algorithm>
 #include <array>
@@ -86,6 +78,7 @@
 #include "pds/grid_neighbourhood.h"
 #include "pds/point.h"
 #include "pds/rng.h"
+#include "mapped_pages.h"
 #include "radius_levels.h"
 
 namespace pds::detail {
@@ -159,7 +152,7 @@ class FlatLevels {
       cover_row_stride_[i] =
           i == 1 ? cover_words_ : cover_row_stride_[i - 1] * static_cast<std::size_t>(cover_cells_[i - 1]);
     // Mapped at once: the cover is read everywhere, by every dart.
-    cover_ = zeroed<std::uint64_t>(rows * cover_words_, true);
+    cover_ = detail::map_zeroed<std::uint64_t>(rows * cover_words_, detail::Pages::kPopulate);
   }
 
   // Where x falls: its level, squared radius, cell (of the padded grid),
@@ -356,37 +349,13 @@ class FlatLevels {
     double r2;
   };
 
-  // Zeroed pages from mmap, which the kernel maps on first touch (where the
-  // field puts samples of the level, and around).
-  struct Unmap {
-    std::size_t bytes = 0;
-    void operator()(void* p) const {
-#if PDS_FLAT_LEVELS_MMAP
-      if (p) munmap(p, bytes);
-#else
-      std::free(p);
-#endif
-    }
-  };
+  // Zeroed pages (mapped_pages.h), which the kernel gives on first touch
+  // (where the field puts samples of the level, and around); huge pages up
+  // to kHugePagesUpTo.
   template <class T>
-  static std::unique_ptr<T[], Unmap> zeroed(std::size_t count, [[maybe_unused]] bool populate = false) {
-    const std::size_t bytes = count * sizeof(T);
-#if PDS_FLAT_LEVELS_MMAP
-#ifdef MAP_POPULATE
-    const int flags = MAP_PRIVATE | MAP_ANONYMOUS | (populate ? MAP_POPULATE : 0);
-#else
-    const int flags = MAP_PRIVATE | MAP_ANONYMOUS;
-#endif
-    void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, flags, -1, 0);
-    if (p == MAP_FAILED) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-    if (!populate && bytes <= kHugePagesUpTo) madvise(p, bytes, MADV_HUGEPAGE);
-#endif
-#else
-    void* p = std::calloc(count, sizeof(T));
-    if (!p) throw std::bad_alloc();
-#endif
-    return std::unique_ptr<T[], Unmap>(static_cast<T*>(p), Unmap{bytes});
+  static detail::MappedArray<T> zeroed(std::size_t count) {
+    using detail::Pages;
+    return detail::map_zeroed<T>(count, count * sizeof(T) <= kHugePagesUpTo ? Pages::kHuge : Pages::kLazy);
   }
 
   struct Level {
@@ -397,7 +366,7 @@ class FlatLevels {
     std::array<std::size_t, D> stride{};
     std::array<unsigned, D> interior{};  // torus: cells c with c - margin < interior skip the min-image step
     std::array<std::vector<std::ptrdiff_t>, (1u << D)> lists;  // per half-cell: offsets to read, own first
-    std::unique_ptr<Cell[], Unmap> grid;
+    detail::MappedArray<Cell> grid;
     double widen = 0;  // added to a reach against the rounding of the cell arithmetic
     // A bit per other level that may hold a sample in conflict with a query
     // here, per block of kBlockCells cells along each axis.
@@ -803,7 +772,7 @@ class FlatLevels {
   std::array<double, D> cover_inv_edge_{}, cover_edge_{};
   std::array<std::size_t, D> cover_row_stride_{};  // words; axis 0 is the bit within the row
   std::size_t cover_words_ = 0;                    // a row's
-  std::unique_ptr<std::uint64_t[], Unmap> cover_;
+  detail::MappedArray<std::uint64_t> cover_;
 };
 
 }  // namespace pds::detail
