@@ -6,7 +6,7 @@ then round 2, ...), then writes each configuration's points once to CSV and runs
 against its peers" (median and range of samples per CPU second of the sampling
 call, rho and maximality from `pds analyze`, median peak RSS of the process).
 
-    bench/peers/run_peers.py [--rounds 3] [--only REGEX] [--skip-analyze] [--no-build] [--from-log LOG]
+    bench/peers/run_peers.py [--rounds 3] [--cpu N] [--only REGEX] [--skip-analyze] [--no-build] [--from-log LOG]
 
 Where the peers are (environment, defaults in brackets):
   THINKS_V03 [/tmp/thinks-v0.3]       thinks/poisson-disk-sampling at tag v0.3
@@ -37,6 +37,7 @@ NODE_MODULES = env("FAST2D_NODE_MODULES", "/tmp/npmpeer/node_modules")
 PDS_BUILD = os.path.abspath(env("PDS_BUILD", os.path.join(ROOT, "build")))
 OUT = env("PEERS_OUT", "/tmp/peers-build")
 FLAGS = ["-O3", "-DNDEBUG", "-ffp-contract=off"]
+PIN_CPU = ""  # --cpu
 PDS = os.path.join(PDS_BUILD, "apps/pds/pds")
 
 
@@ -111,7 +112,8 @@ def run_cmd(cfg, csv):
 
 def run_once(cfg, csv=None, log=None):
     cmd = run_cmd(cfg, csv)
-    p = subprocess.run(["/usr/bin/time", "-f", "PEAK_KB %M"] + cmd, capture_output=True, text=True)
+    pin = ["taskset", "-c", PIN_CPU] if PIN_CPU else []
+    p = subprocess.run(pin + ["/usr/bin/time", "-f", "PEAK_KB %M"] + cmd, capture_output=True, text=True)
     text = p.stdout + p.stderr
     if log:
         log.write(" ".join(cmd) + "\n" + text)
@@ -149,11 +151,16 @@ def analyze(cfg, csv):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--rounds", type=int, default=3)
+    # Every timed run on this one CPU (taskset): on a shared virtual machine one
+    # vCPU can run everything 1.5x slower at random, which decides a ratio.
+    ap.add_argument("--cpu", default="", help="pin every timed run to this CPU (taskset -c)")
     ap.add_argument("--only", default="")
     ap.add_argument("--skip-analyze", action="store_true")
     ap.add_argument("--no-build", action="store_true")
     ap.add_argument("--from-log", help="take the timed rounds from this run.log instead of running them")
     a = ap.parse_args()
+    global PIN_CPU
+    PIN_CPU = a.cpu
     if not a.no_build:
         build()
     cfgs = [c for c in configs() if re.search(a.only, f'{c["name"]} {c["domain"]} {c["dim"]}D {" ".join(c["cmd"])}')]

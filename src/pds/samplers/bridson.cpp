@@ -416,6 +416,7 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
   PointSet<D> points;
   std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius, points);
   points.reserve(static_cast<std::size_t>(0.75 * packing_count(sizing_volume(domain, radius), radius, D)) + 64);
+  detail::advise_huge_pages(points);
   points.push_back(Point<D>{});
   points[0].fill(std::numeric_limits<double>::quiet_NaN());
   const auto add = [&](const Point<D>& c, std::size_t at) __attribute__((always_inline)) {

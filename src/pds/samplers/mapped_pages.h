@@ -21,6 +21,8 @@
 #include <memory>
 #include <new>
 
+#include "pds/point.h"
+
 namespace pds::detail {
 
 struct UnmapPages {
@@ -64,6 +66,12 @@ MappedArray<T> map_zeroed(std::size_t count, Pages pages) {
   if (!p) throw std::bad_alloc();
 #endif
   return MappedArray<T>(static_cast<T*>(p), UnmapPages{bytes});
+}
+
+/// advise_huge_pages() (pds/point.h) for a vector's reserved block.
+template <class Vector>
+void advise_huge_pages(Vector& v) noexcept {
+  advise_huge_pages(v.data(), v.capacity() * sizeof(typename Vector::value_type));
 }
 
 }  // namespace pds::detail

@@ -194,6 +194,7 @@ class MaximalDartsSampler {
     // little denser at its faces); past it the vector grows as usual.
     const double expected = typical_count(sizing_volume(domain, r_), r_, D) * 1.6 + 1024.0;
     samples_.reserve(static_cast<std::size_t>(std::min(expected, static_cast<double>(size))));
+    detail::advise_huge_pages(samples_);
     key_ = mix64(seed ^ 0x6d6178696d616c64ULL);
   }
 

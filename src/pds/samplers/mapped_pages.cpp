@@ -1,0 +1,20 @@
+#include "mapped_pages.h"
+
+#include <cstdint>
+
+#include "pds/point.h"
+
+namespace pds::detail {
+
+void advise_huge_pages([[maybe_unused]] void* p, [[maybe_unused]] std::size_t bytes) noexcept {
+#if PDS_MAPPED_PAGES && defined(MADV_HUGEPAGE)
+  // Below a huge page there is nothing to gain; madvise wants whole pages.
+  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20, kPage = 4096;
+  if (bytes < kHuge) return;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(p) + kPage - 1) & ~(kPage - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kPage - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#endif
+}
+
+}  // namespace pds::detail
