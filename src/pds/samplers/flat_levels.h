@@ -58,7 +58,6 @@
 // most 128 MiB: coarser cells beyond), mapped at once; the blocks' bits 4
 // bytes a block.
 
-
 #include <algorithm>
 #include <array>
 #include <bit>

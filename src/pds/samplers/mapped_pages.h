@@ -1,6 +1,6 @@
 #pragma once
 // Large zeroed arrays straight from the system's pages, for the background
-// grids of the samplers (bridson.cpp, flat_levels.h).
+// grids of the samplers (bridson.cpp, flat_levels.h, maximal_darts.cpp).
 //
 // Why not std::vector: a grid of tens of megabytes is read at random, a few
 // cells per query all over the front. Mapped in 2 MiB huge pages where the

@@ -182,7 +182,6 @@ class MaximalDartsSampler {
     const std::size_t size = hood_.size();
     // Written whole here, so in huge pages where offered (mapped_pages.h).
     state_ = detail::map_zeroed<std::int32_t>(size, detail::Pages::kHuge);
-    cells_ = size;
     std::fill_n(state_.get(), size, kOpen);
     const std::size_t chunks = std::clamp<std::size_t>(size / 2048, 1, std::size_t{1} << kChunkBits);
     chunks_.resize(chunks);
@@ -574,7 +573,7 @@ class MaximalDartsSampler {
     }
     // Open sub-cells peak near one per grid cell (level 1 or 2): a level that
     // leaves far more would keep growing 2^D-fold with each further one.
-    if (open > 4 * cells_ + 4096)
+    if (open > 4 * hood_.size() + 4096)
       throw Failure("maximal-darts: " + std::to_string(open) + " sub-cells still open at refinement level " +
                     std::to_string(level_) + ", more than 4 per grid cell (numerical breakdown)");
   }
@@ -594,7 +593,6 @@ class MaximalDartsSampler {
   std::array<std::vector<double>, D> corners_;  // cell boundaries per axis, n + 1 each
   Stencil near_;                                // the own cell, then every cell that can hold a sample within r
   detail::MappedArray<std::int32_t> state_;     // per cell: >= 0 a sample, kOpen, kCovered, or a candidate marker
-  std::size_t cells_ = 0;
   std::vector<Chunk> chunks_;
   PointSet<D> samples_;
 };
