@@ -4,6 +4,7 @@
 // Point<D> is a plain std::array so that a PointSet<D> is one contiguous block
 // of D*N doubles, cheap to copy to files and to other libraries.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <ostream>
@@ -45,6 +46,10 @@ namespace detail {
 /// of [p, p + bytes): fewer page faults for a large block about to be
 /// written. A hint, ignored where not offered.
 void advise_huge_pages(void* p, std::size_t bytes) noexcept;
+/// Gives the whole pages of [p, p + bytes) back to the system (they read as
+/// zeros afterwards): for a block whose contents are no longer needed but
+/// which its owner frees later. A hint, ignored where not offered.
+void release_pages(void* p, std::size_t bytes) noexcept;
 }  // namespace detail
 
 /// A point set whose dimension is known only at run time: what files hold and
@@ -65,6 +70,28 @@ struct PointCloud {
     detail::advise_huge_pages(cloud.coords.data(), points.size() * sizeof(Point<D>));
     const double* first = points.empty() ? nullptr : points.front().data();
     cloud.coords.assign(first, first + points.size() * D);
+    return cloud;
+  }
+
+  /// The same from a set that is not needed afterwards: its pages are given
+  /// back as the copy passes them, so that the two blocks are not both
+  /// resident (a sampler's output and the cloud were the peak of several
+  /// methods). `points` is left empty.
+  template <int D>
+  static PointCloud from(PointSet<D>&& points) {
+    static_assert(sizeof(Point<D>) == D * sizeof(double));
+    PointCloud cloud{D, {}};
+    const std::size_t total = points.size() * D;
+    cloud.coords.reserve(total);
+    detail::advise_huge_pages(cloud.coords.data(), total * sizeof(double));
+    double* first = points.empty() ? nullptr : points.front().data();
+    constexpr std::size_t kChunk = (std::size_t{2} << 20) / sizeof(double);  // a huge page of doubles
+    for (std::size_t done = 0; done < total; done += kChunk) {
+      const std::size_t n = std::min(kChunk, total - done);
+      cloud.coords.insert(cloud.coords.end(), first + done, first + done + n);
+      detail::release_pages(first + done, n * sizeof(double));
+    }
+    PointSet<D>().swap(points);
     return cloud;
   }
 
