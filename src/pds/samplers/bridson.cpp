@@ -18,17 +18,21 @@
 // Guarantees: minimum distance >= r in the exact arithmetic of
 // Domain::distance2 (the same formula, so the all-pairs oracle agrees to the
 // last bit); samples in [lo, hi); same seed, same points. Near-maximal, not
-// proven maximal. Relative radius ~0.73 (2D) measured, docs/bridson.md.
+// proven maximal. Relative radius ~0.73 (2D) measured, docs/bridson.md. In
+// 2D each accepted candidate is moved onto the grid's lattice (float
+// offsets from a tile corner: a move of at most 2^-16 r) and tested there,
+// so the samples are points of that lattice.
 //
 // Complexity: O(k N) candidate checks, each a fixed number of cells (the own
 // cell and 15 neighbours in 2D, and 90 in 3D, for the usual reach of 2; typically
 // the first 8, nearest cells first). Memory: the grid, about 3 cells a sample
-// in 2D (16 bytes each) and 9 in 3D (4 bytes each), and the output.
+// in 2D (8 bytes each) and 9 in 3D (4 bytes each), and the output.
 //
 // Speed (why not pds::Grid): this is the hot loop of the project, so the grid
 // here is specialised (docs/bridson.md, "Speed"). In 2D cells store the
-// sample's coordinates directly, in 3D its index in the output (BridsonGrid::
-// kIndexed says why); an empty cell reads as NaN coordinates, which compare
+// sample itself (float offsets from its tile's corner), in 1D its coordinate,
+// in 3D its index in the output (BridsonGrid says why); an empty cell reads
+// as NaN coordinates, which compare
 // as "not closer", so the scan has no occupancy branch; a margin of `reach` cells around the
 // domain removes bounds checks and, on a torus, holds copies of the samples
 // near the opposite faces (their original coordinates, so the distance is the
@@ -44,6 +48,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <limits>
 #include <sstream>
 #include <string>
@@ -69,20 +77,40 @@ namespace {
 
 template <int D, bool Periodic>
 class BridsonGrid {
-  // What a cell holds. In 2D the sample's coordinates (NaN when empty): the
-  // scan reads them with no indirection, twice as fast as through an index
-  // at 10^6. In 3D, with nine cells a sample, coordinates made the grid ten
-  // times the output (224 MB at 10^6); there a cell holds the sample's index
-  // in the store (0, the NaN marker, when empty): a sixth of the memory and
-  // no slower (measured, docs/bridson.md).
+  // What a cell holds (NaN when empty: the scan has no occupancy branch).
+  // In 2D the sample itself, as float offsets from the lower corner of its
+  // tile of kTile x kTile cells: the scan reads it with no indirection (twice
+  // as fast as through an index at 10^6) in half the bytes of double
+  // coordinates. Every sample is put on that lattice (steps of at most 2^-24
+  // of a tile) before it is tested (is_free), so tile corner + offset, rounded
+  // to double, is the sample exactly and the scan's distances are the
+  // output's. 1D keeps double coordinates (no smaller). In 3D, with nine
+  // cells a sample, coordinates made the grid ten times the output (224 MB
+  // at 10^6); there a cell holds the sample's index in the store (0, the NaN
+  // marker, when empty): a sixth of the memory and no slower (measured,
+  // docs/bridson.md).
   static constexpr bool kIndexed = D >= 3;
-  using Cell = std::conditional_t<kIndexed, std::uint32_t, Point<D>>;
+  static constexpr bool kLattice = D == 2;
+  using Cell = std::conditional_t<kIndexed, std::uint32_t, std::conditional_t<kLattice, std::array<float, D>, Point<D>>>;
+  static constexpr int kTileBits = 8, kTile = 1 << kTileBits;
 
  public:
+  using Offsets = std::array<float, D>;
+  /// A candidate that is_free() accepted, as it becomes a sample: the point
+  /// (on the lattice in 2D) and its offsets there.
+  struct Placed {
+    Point<D> point;
+    Offsets offsets;
+  };
   /// `store` holds the samples, store[0] the empty marker (NaN); a cell
   /// holds its sample's index there.
   BridsonGrid(const Domain<D>& domain, double radius, const PointSet<D>& store)
-      : radius2_(radius * radius), store_(store) {
+      : radius2_(radius * radius),
+        // A point on the lattice lies within 2^-16 r of where it was drawn
+        // (float offsets below 256 cells, under 182 r), and 1e-4 r covers that
+        // with room for the rounding of any distance.
+        inner_radius2_(radius * radius * (1.0 - 1e-4) * (1.0 - 1e-4)),
+        store_(store) {
     // Slightly under r/sqrt(D) so that two samples r apart can never share a
     // cell, whatever the rounding of the cell arithmetic.
     const double max_edge = radius / std::sqrt(static_cast<double>(D)) * (1.0 - 1e-9);
@@ -144,9 +172,29 @@ class BridsonGrid {
     // of the 2D run at 10^6 went to 4 KiB page faults). A zero index is empty.
     grid_ = detail::map_zeroed<Cell>(layout.size(), detail::Pages::kHuge);
     if constexpr (!kIndexed) {
-      Point<D> empty;
-      empty.fill(std::numeric_limits<double>::quiet_NaN());
+      Cell empty;
+      empty.fill(std::numeric_limits<typename Cell::value_type>::quiet_NaN());
       std::fill_n(grid_.get(), layout.size(), empty);
+    }
+    if constexpr (kLattice) {
+      for (int i = 0; i < D; ++i) {
+        const double step = extent_[i] / cells_[i];
+        // Each padded position's tile corner: in the margin of a torus that
+        // of the cell it mirrors (its copies keep their offsets from there).
+        tile_corner_[i].resize(static_cast<std::size_t>(padded[i]));
+        for (int j = 0; j < padded[i]; ++j) {
+          const int c = ((j - reach_) % cells_[i] + cells_[i]) % cells_[i];
+          tile_corner_[i][static_cast<std::size_t>(j)] = lo_[i] + static_cast<double>(c >> kTileBits << kTileBits) * step;
+        }
+        // Each cell's faces (the last one's upper face: hi exactly).
+        cell_lo_[i].resize(static_cast<std::size_t>(cells_[i]));
+        cell_hi_[i].resize(static_cast<std::size_t>(cells_[i]));
+        for (int c = 0; c < cells_[i]; ++c) {
+          cell_lo_[i][static_cast<std::size_t>(c)] = c == 0 ? lo_[i] : lo_[i] + static_cast<double>(c) * step;
+          cell_hi_[i][static_cast<std::size_t>(c)] =
+              c + 1 == cells_[i] ? domain.hi[i] : lo_[i] + static_cast<double>(c + 1) * step;
+        }
+      }
     }
     build_offsets(layout, radius);
     // Offsets of the rows (along axis 0) that prefetch_around() fetches, axis
@@ -165,23 +213,37 @@ class BridsonGrid {
   }
 
   /// True if no stored sample is closer than the radius to p; `cell` receives
-  /// p's cell for insert().
-  [[gnu::always_inline]] bool is_free(const Point<D>& p, std::size_t& cell) const {
+  /// p's cell for insert(). In 2D p is moved onto the lattice (by at most
+  /// 2^-16 r; it stays in its cell and in the domain) and the point on the
+  /// lattice is what is tested; one that cannot be placed there is refused.
+  [[gnu::always_inline]] bool is_free(const Point<D>& p, std::size_t& cell, Placed& placed) const {
     cell = 0;
     unsigned half = 0;     // which half of its cell p lies in, along each axis
     bool interior = true;  // all cells within reach are inside the domain, none in the margin
+    bool one_tile = true;   // all cells within reach are in p's tile (or empty margin cells of a box)
+    std::array<int, D> at;  // p's position in the padded grid
     for (int i = 0; i < D; ++i) {
       // Position in half-cells (doubling is exact): its low bit is the half.
       const int h = std::min(static_cast<int>((p[i] - lo_[i]) * twice_inv_edge_[i]), 2 * cells_[i] - 1);
       const int c = h >> 1;
       half |= static_cast<unsigned>(h & 1) << i;
       interior &= static_cast<unsigned>(c - reach_) < interior_cells_[i];
-      cell += static_cast<std::size_t>(c + reach_) * stride_[i];
+      one_tile &= static_cast<unsigned>((c & (kTile - 1)) - reach_) <= static_cast<unsigned>(kTile - 1 - 2 * reach_);
+      at[i] = c + reach_;
+      cell += static_cast<std::size_t>(at[i]) * stride_[i];
     }
-    // Away from the faces of a torus no neighbour is a periodic image and the
-    // min-image correction never applies (see interior_cells_).
-    if (Periodic && !interior) return scan<true>(p, cell, offsets_[half]);
-    return scan<false>(p, cell, offsets_[half]);
+    if constexpr (kLattice) {
+      // Most candidates fail. A sample closer than inner_radius2_ to p is
+      // closer than r to p's point on the lattice, so p is tested first, as
+      // it is, and only a candidate that passes is moved onto the lattice
+      // (a chain of conversions the test would otherwise wait for) and
+      // tested again, exactly.
+      if (!scan_any(p, cell, at, half, interior, one_tile, inner_radius2_)) return false;
+      return settle_on_lattice(p, cell, at, interior, one_tile, placed);
+    }
+    if (!scan_any(p, cell, at, half, interior, one_tile, radius2_)) return false;
+    placed.point = p;
+    return true;
   }
 
   // Asks for the cells that the candidates around `centre` will read, all at
@@ -204,18 +266,79 @@ class BridsonGrid {
     }
   }
 
-  /// Files store[index] in its cell (from is_free()).
-  void insert(const Point<D>& p, std::size_t cell, std::size_t index) {
+  /// Files store[index] in its cell (p and cell from the is_free() just
+  /// before, which said yes).
+  void insert(const Placed& placed, std::size_t cell, std::size_t index) {
     Cell value;
     if constexpr (kIndexed)
       value = static_cast<std::uint32_t>(index);  // fewer than kMaxGridCells < 2^32 samples
+    else if constexpr (kLattice)
+      value = placed.offsets;
     else
-      value = p;
+      value = placed.point;
     grid_[cell] = value;
     if constexpr (Periodic) copy_to_margin(value, cell);
   }
 
  private:
+  // The rare second step of is_free(): p passed against the inner radius;
+  // moves it onto the lattice and tests it exactly. Not inlined: the hot
+  // loop is the first step.
+  // (The candidate itself is not touched: passed by reference to a call, it
+  // would live in memory, not registers, in the hot loop.)
+  [[gnu::noinline]] bool settle_on_lattice(const Point<D>& candidate, std::size_t cell, const std::array<int, D>& at,
+                                           bool interior, bool one_tile, Placed& placed) const {
+    Point<D>& p = placed.point;
+    p = candidate;
+    if (!to_lattice(p, at, placed.offsets)) return false;
+    unsigned half = 0;
+    for (int i = 0; i < D; ++i) {
+      // The half of the cell p now lies in (the cell stays: to_lattice keeps
+      // p within its faces, which the formula may place an ulp off).
+      const int h = static_cast<int>((p[i] - lo_[i]) * twice_inv_edge_[i]) - 2 * (at[i] - reach_);
+      half |= static_cast<unsigned>(std::clamp(h, 0, 1)) << i;
+    }
+    return scan_any(p, cell, at, half, interior, one_tile, radius2_);
+  }
+
+  // Away from the faces of a torus no neighbour is a periodic image and the
+  // min-image correction never applies (see interior_cells_).
+  [[gnu::always_inline]] bool scan_any(const Point<D>& p, std::size_t cell, const std::array<int, D>& at,
+                                       unsigned half, bool interior, [[maybe_unused]] bool one_tile,
+                                       double radius2) const {
+    if (Periodic && !interior) return scan<true, false>(p, cell, at, half, radius2);
+    if constexpr (kLattice)
+      if (one_tile) return scan<false, true>(p, cell, at, half, radius2);
+    return scan<false, false>(p, cell, at, half, radius2);
+  }
+
+  // Moves p to its tile's corner + a float offset (rounded to double, as
+  // the scan reconstructs it), the nearest such point within p's cell (the
+  // cell at padded position `at`): two samples of one cell would be closer
+  // than r. False in the rare case where rounding leaves no such point next
+  // to p (p against a cell's face far from the origin), which then counts
+  // as a rejected candidate.
+  [[gnu::always_inline]] bool to_lattice(Point<D>& p, const std::array<int, D>& at, Offsets& lattice) const {
+    for (int i = 0; i < D; ++i) {
+      const double corner = tile_corner_[i][static_cast<std::size_t>(at[i])];
+      const double lower = cell_lo_[i][static_cast<std::size_t>(at[i] - reach_)];
+      const double upper = cell_hi_[i][static_cast<std::size_t>(at[i] - reach_)];
+      float offset = static_cast<float>(p[i] - corner);
+      double q = corner + static_cast<double>(offset);
+      if (!(q >= lower)) {
+        offset = std::nextafter(static_cast<float>(lower - corner), std::numeric_limits<float>::infinity());
+        q = corner + static_cast<double>(offset);
+      } else if (!(q < upper)) {
+        offset = std::nextafter(static_cast<float>(upper - corner), 0.0f);
+        q = corner + static_cast<double>(offset);
+      }
+      if (!(q >= lower && q < upper)) return false;
+      p[i] = q;
+      lattice[i] = offset;
+    }
+    return true;
+  }
+
   // The cells of `offsets` around p's cell, kBlock at a time with one branch
   // a block (the exit is taken once, not tested and mispredicted once a
   // cell), two cells a vector: the arithmetic is Domain::distance2's, term
@@ -224,13 +347,23 @@ class BridsonGrid {
   // two masks exclude each other, and subtracting a masked 0 changes
   // nothing); without it the difference is taken as is, which is the same
   // arithmetic where the correction never applies (is_free's `interior`).
-  template <bool MinImage>
-  [[gnu::always_inline]] bool scan(const Point<D>& p, std::size_t cell,
-                                   const std::vector<std::ptrdiff_t>& offsets) const {
+  template <bool MinImage, bool OneTile>
+  [[gnu::always_inline]] bool scan(const Point<D>& p, std::size_t cell, [[maybe_unused]] const std::array<int, D>& at,
+                                   unsigned half, double radius2_) const {
     typedef double Pair __attribute__((vector_size(16)));
     typedef std::int64_t Mask __attribute__((vector_size(16)));
+    const std::vector<std::ptrdiff_t>& offsets = offsets_[half];
     const Cell* base = grid_.get() + cell;
     const Point<D>* store = store_.data();
+    // Lattice cells: each neighbour's tile corner, p's when all share its
+    // tile, else looked up through the neighbour's steps along each axis.
+    [[maybe_unused]] std::array<const double*, D> corner;
+    [[maybe_unused]] std::array<const std::int8_t*, D> step;
+    if constexpr (kLattice)
+      for (int i = 0; i < D; ++i) {
+        corner[i] = tile_corner_[i].data() + at[i];
+        step[i] = steps_[half][i].data();
+      }
     const Pair radius2 = {radius2_, radius2_};
     for (std::size_t j = 0; j < offsets.size(); j += kBlock) {
       if constexpr (kIndexed) {
@@ -242,11 +375,37 @@ class BridsonGrid {
       }
       Mask closer = {0, 0};
       for (std::size_t t = j; t < j + kBlock; t += 2) {
-        const Point<D>& a = sample_at(base + offsets[t], store);
-        const Point<D>& b = sample_at(base + offsets[t + 1], store);
+        // The two cells' samples, axis by axis (lane 0 cell t, lane 1 cell t + 1).
+        std::array<Pair, D> xs;
+        if constexpr (kLattice) {
+          // Both offsets of a cell converted at once, then regrouped by axis;
+          // plus the tile corners: the samples exactly as to_lattice() made them.
+#if defined(__SSE2__)
+          const Pair a = (Pair)_mm_cvtps_pd(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&base[offsets[t]]))));
+          const Pair b = (Pair)_mm_cvtps_pd(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&base[offsets[t + 1]]))));
+#else
+          typedef float Floats __attribute__((vector_size(8)));
+          Floats fa, fb;
+          std::memcpy(&fa, &base[offsets[t]], sizeof fa);
+          std::memcpy(&fb, &base[offsets[t + 1]], sizeof fb);
+          const Pair a = __builtin_convertvector(fa, Pair), b = __builtin_convertvector(fb, Pair);
+#endif
+          xs[0] = __builtin_shufflevector(a, b, 0, 2);
+          xs[1] = __builtin_shufflevector(a, b, 1, 3);
+          for (int i = 0; i < D; ++i)
+            xs[i] += OneTile ? Pair{corner[i][0], corner[i][0]} : Pair{corner[i][step[i][t]], corner[i][step[i][t + 1]]};
+        } else {
+          for (int i = 0; i < D; ++i) {
+            if constexpr (kIndexed)
+              xs[i] = Pair{store[base[offsets[t]]][i], store[base[offsets[t + 1]]][i]};
+            else
+              xs[i] = Pair{base[offsets[t]][i], base[offsets[t + 1]][i]};
+          }
+        }
         Pair s;
         for (int i = 0; i < D; ++i) {
-          Pair d = Pair{a[i], b[i]} - p[i];
+          const Pair& x = xs[i];
+          Pair d = x - p[i];
           if constexpr (MinImage) {
             const Pair half = {half_[i], half_[i]}, extent = {extent_[i], extent_[i]};
             const Mask above = d > half, below = d < -half;
@@ -260,14 +419,6 @@ class BridsonGrid {
       if (closer[0] | closer[1]) return false;
     }
     return true;
-  }
-
-  // The sample a cell holds (NaN coordinates when empty).
-  [[gnu::always_inline]] static const Point<D>& sample_at(const Cell* cell, [[maybe_unused]] const Point<D>* store) {
-    if constexpr (kIndexed)
-      return store[*cell];
-    else
-      return *cell;
   }
 
   // For each sub-cell (half of the cell along each axis) the neighbour cells
@@ -316,9 +467,14 @@ class BridsonGrid {
       });
       std::vector<Step> steps;
       for (const auto& [g2, o] : list) steps.push_back(o);
+      for (int i = 0; i < D; ++i) {
+        steps_[half][i].clear();
+        for (const Step& o : steps) steps_[half][i].push_back(static_cast<std::int8_t>(o[i]));
+      }
       offsets_[half] = layout.stencil(std::move(steps)).linear;
       // Pad to whole blocks with the own cell, which is empty when scanned.
       while (offsets_[half].size() % kBlock) offsets_[half].push_back(0);
+      for (int i = 0; i < D; ++i) steps_[half][i].resize(offsets_[half].size(), 0);
     }
   }
 
@@ -353,7 +509,7 @@ class BridsonGrid {
     }
   }
 
-  double radius2_;
+  double radius2_, inner_radius2_;
   std::array<double, D> lo_{}, extent_{}, half_{}, inv_edge_{}, twice_inv_edge_{};
   std::array<int, D> cells_{}, padded_{};
   std::array<unsigned, D> interior_cells_{};
@@ -362,6 +518,11 @@ class BridsonGrid {
   const PointSet<D>& store_;
   detail::MappedArray<Cell> grid_;
   std::array<std::vector<std::ptrdiff_t>, (1u << D)> offsets_;
+  // Lattice cells only, per axis: the steps of offsets_, the tile corner of
+  // every padded position and the faces of every cell of the domain; and the
+  // (is_free() hands insert() the point's offsets).
+  std::array<std::array<std::vector<std::int8_t>, D>, (1u << D)> steps_;
+  std::array<std::vector<double>, D> tile_corner_, cell_lo_, cell_hi_;
   std::vector<std::ptrdiff_t> prefetch_rows_;
 };
 
@@ -374,8 +535,15 @@ class ConflictGrid {
  public:
   ConflictGrid(const Domain<D>& domain, double radius, const PointSet<D>&)
       : grid_(Grid<D>::for_conflicts(domain, radius)), radius_(radius) {}
-  bool is_free(const Point<D>& p, std::size_t&) const { return !grid_.any_closer_than(p, radius_); }
-  void insert(const Point<D>& p, std::size_t, std::size_t) { grid_.insert(p); }
+  struct Placed {
+    Point<D> point;
+  };
+  bool is_free(const Point<D>& p, std::size_t&, Placed& placed) const {
+    if (grid_.any_closer_than(p, radius_)) return false;
+    placed.point = p;
+    return true;
+  }
+  void insert(const Placed& placed, std::size_t, std::size_t) { grid_.insert(placed.point); }
   void prefetch_around(const Point<D>&) const {}
 
  private:
@@ -422,13 +590,15 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
   // (After the grid, which refuses a radius too small for the domain.)
   PointSet<D> points;
   std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius, points);
+  typename decltype(grid)::Placed placed{};  // the candidate is_free() last accepted, as a sample
   points.reserve(static_cast<std::size_t>(0.75 * packing_count(sizing_volume(domain, radius), radius, D)) + 64);
   detail::advise_huge_pages(points);
   points.push_back(Point<D>{});
   points[0].fill(std::numeric_limits<double>::quiet_NaN());
-  const auto add = [&](const Point<D>& c, std::size_t at) __attribute__((always_inline)) {
-    points.push_back(c);
-    grid.insert(c, at, points.size() - 1);
+  // Files the candidate is_free() just accepted.
+  const auto add = [&](std::size_t at) __attribute__((always_inline)) {
+    points.push_back(placed.point);
+    grid.insert(placed, at, points.size() - 1);
     const std::size_t count = points.size() - 1;
     if (count % kReportEvery == 0) reporter.update(static_cast<double>(count));
   };
@@ -456,10 +626,15 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
   }
   Rng flat_rng(seed, {0x666c6174 /* "flat" */});
   std::size_t cell = 0;
-  const Point<D> first = uniform_point(rng, domain);
-  grid.is_free(first, cell);
-  add(first, cell);
-  active.push_back(first);
+  // (The grid is empty: only a point that cannot go on the lattice, about
+  // 2^-24 of the draws at most, is refused.)
+  Point<D> first = uniform_point(rng, domain);
+  for (int redraw = 0; !grid.is_free(first, cell, placed); ++redraw) {
+    if (redraw == 64) throw Failure("bridson: no first sample could be placed on the grid's lattice");
+    first = uniform_point(rng, domain);
+  }
+  add(cell);
+  active.push_back(placed.point);
   // The next candidate around `centre` in c: wrapped into a torus; false
   // where it leaves a box.
   const auto next_candidate = [&](const Point<D>& centre, Point<D>& c) __attribute__((always_inline)) {
@@ -505,9 +680,9 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
       const int tries = surface ? k : annulus_hits<D>(k, rng);
       for (int attempt = 0; attempt < tries; ++attempt) {
         Point<D> c;
-        if (next_candidate(centre, c) && grid.is_free(c, cell)) {
-          add(c, cell);
-          active.push_back(c);
+        if (next_candidate(centre, c) && grid.is_free(c, cell, placed)) {
+          add(cell);
+          active.push_back(placed.point);
         }
       }
     }
@@ -521,9 +696,9 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
     for (int attempt = 0; attempt < k; ++attempt) {
       Point<D> c;
       if (!next_candidate(centre, c)) continue;
-      if (grid.is_free(c, cell)) {
-        add(c, cell);
-        active.push_back(c);
+      if (grid.is_free(c, cell, placed)) {
+        add(cell);
+        active.push_back(placed.point);
         found = true;
         break;
       }

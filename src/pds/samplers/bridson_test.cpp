@@ -82,6 +82,25 @@ TEST(Bridson, AxesWithFewerWiderCells) {
     }
 }
 
+// In 2D the grid keeps each sample as float offsets from the corner of its
+// tile of 256 x 256 cells, and a sample is put on that lattice before it is
+// tested. Strips 700 cells long cross tile borders (where a scan reads cells
+// of two tiles) and, a million units from the origin, make the rounding of
+// corner + offset move points against cell faces; every pair still holds the
+// radius in the output's own doubles, and every point stays inside.
+TEST(Bridson, LatticeAcrossTilesAndFarFromTheOrigin) {
+  BridsonParams params;
+  params.radius = 0.002;
+  for (const double offset : {0.0, 1e6, -3.5e6})
+    for (bool torus : {false, true}) {
+      const Domain<2> strip{{offset, offset}, {offset + 1.0, offset + 0.01}, torus};
+      const auto points = bridson(params, strip, 5);
+      EXPECT_GT(points.size(), 1000u) << strip;
+      expect_poisson_disk(points, strip, params.radius);
+      EXPECT_EQ(points, bridson(params, strip, 5));
+    }
+}
+
 TEST(Bridson, CountGivesExactlyThatMany) {
   for (std::uint64_t n : {1u, 2u, 7u, 1000u}) {
     GenerateRequest r;
