@@ -20,7 +20,7 @@
 // last bit); samples in [lo, hi); same seed, same points. Near-maximal, not
 // proven maximal. Relative radius ~0.73 (2D) measured, docs/bridson.md. In
 // 2D each accepted candidate is moved onto the grid's lattice (float
-// offsets from a tile corner: a move of at most 2^-16 r) and tested there,
+// offsets from a tile corner: a move of under 3e-5 r) and tested there,
 // so the samples are points of that lattice.
 //
 // Complexity: O(k N) candidate checks, each a fixed number of cells (the own
@@ -106,15 +106,22 @@ class BridsonGrid {
   /// holds its sample's index there.
   BridsonGrid(const Domain<D>& domain, double radius, const PointSet<D>& store)
       : radius2_(radius * radius),
-        // A point on the lattice lies within 2^-16 r of where it was drawn
-        // (float offsets below 256 cells, under 182 r), and 1e-4 r covers that
-        // with room for the rounding of any distance.
+        // A point on the lattice lies within 3e-5 r of where it was drawn
+        // (float offsets below 256 cells, 512 units of at most r / sqrt 2:
+        // half a float step is under 1.1e-5 r, a whole one at a cell's face
+        // 2.2e-5 r), and 1e-4 r covers that with room for the rounding of any
+        // distance.
         inner_radius2_(radius * radius * (1.0 - 1e-4) * (1.0 - 1e-4)),
-        inner_radius2_f_(static_cast<float>(radius * radius * kInnerFloat * kInnerFloat)),
         store_(store) {
     // Slightly under r/sqrt(D) so that two samples r apart can never share a
     // cell, whatever the rounding of the cell arithmetic.
     const double max_edge = radius / std::sqrt(static_cast<double>(D)) * (1.0 - 1e-9);
+    // Lattice offsets are counted in a power of two near a cell's edge, so
+    // that floats hold them at every scale a domain may have (extents from
+    // 1e-150 to 1e150) and scaling by it is exact.
+    unit_ = std::ldexp(1.0, std::ilogb(max_edge));
+    inv_unit_ = 1.0 / unit_;
+    inner_radius2_f_ = static_cast<float>(radius * inv_unit_ * radius * inv_unit_ * kInnerFloat * kInnerFloat);
     double total = 1.0;
     for (int i = 0; i < D; ++i) {
       lo_[i] = domain.lo[i];
@@ -215,7 +222,7 @@ class BridsonGrid {
 
   /// True if no stored sample is closer than the radius to p; `cell` receives
   /// p's cell for insert(). In 2D p is moved onto the lattice (by at most
-  /// 2^-16 r; it stays in its cell and in the domain) and the point on the
+  /// 3e-5 r; it stays in its cell and in the domain) and the point on the
   /// lattice is what is tested; one that cannot be placed there is refused.
   [[gnu::always_inline]] bool is_free(const Point<D>& p, std::size_t& cell, Placed& placed) const {
     cell = 0;
@@ -309,12 +316,12 @@ class BridsonGrid {
   }
 
   // The first test of a candidate whose neighbours all share its tile, in
-  // float, relative to the tile's corner: false if a sample lies closer than
-  // kInnerFloat r. Conservative: p's offset rounds by at most 2^-17 r (it is
-  // below 182 r), so a distance near r comes out within 2e-5 r (4e-5 r^2
-  // squared, with the rounding of squares and sums), far inside the 1e-3 r
-  // between kInnerFloat r and r; and a point on the lattice lies within
-  // 2^-16 r of p.
+  // float, in units from the tile's corner: false if a sample lies closer
+  // than kInnerFloat r. Conservative: p's offset rounds by at most 1.1e-5 r
+  // (half a float step below 512 units), so a distance near r comes out
+  // within 2.2e-5 r (5e-5 r^2 squared, with the rounding of squares and
+  // sums), far inside the 1e-3 r between kInnerFloat r and r; and a point on
+  // the lattice lies within 3e-5 r of p.
   [[gnu::always_inline]] bool scan_in_tile(const Point<D>& p, std::size_t cell, const std::array<int, D>& at,
                                            unsigned half) const {
     typedef float Two __attribute__((vector_size(8)));
@@ -324,7 +331,7 @@ class BridsonGrid {
     const Cell* base = grid_.get() + cell;
     std::array<Four, D> q;
     for (int i = 0; i < D; ++i) {
-      const float x = static_cast<float>(p[i] - tile_corner_[i][static_cast<std::size_t>(at[i])]);
+      const float x = static_cast<float>((p[i] - tile_corner_[i][static_cast<std::size_t>(at[i])]) * inv_unit_);
       q[i] = Four{x, x, x, x};
     }
     const Four inner2 = {inner_radius2_f_, inner_radius2_f_, inner_radius2_f_, inner_radius2_f_};
@@ -357,8 +364,8 @@ class BridsonGrid {
     return scan<false, false>(p, cell, at, half, radius2);
   }
 
-  // Moves p to its tile's corner + a float offset (rounded to double, as
-  // the scan reconstructs it), the nearest such point within p's cell (the
+  // Moves p to its tile's corner + a float offset times unit_ (rounded to
+  // double, as the scan reconstructs it), the nearest such point within p's cell (the
   // cell at padded position `at`): two samples of one cell would be closer
   // than r. False in the rare case where rounding leaves no such point next
   // to p (p against a cell's face far from the origin), which then counts
@@ -368,14 +375,14 @@ class BridsonGrid {
       const double corner = tile_corner_[i][static_cast<std::size_t>(at[i])];
       const double lower = cell_lo_[i][static_cast<std::size_t>(at[i] - reach_)];
       const double upper = cell_hi_[i][static_cast<std::size_t>(at[i] - reach_)];
-      float offset = static_cast<float>(p[i] - corner);
-      double q = corner + static_cast<double>(offset);
+      float offset = static_cast<float>((p[i] - corner) * inv_unit_);
+      double q = corner + static_cast<double>(offset) * unit_;
       if (!(q >= lower)) {
-        offset = std::nextafter(static_cast<float>(lower - corner), std::numeric_limits<float>::infinity());
-        q = corner + static_cast<double>(offset);
+        offset = std::nextafter(static_cast<float>((lower - corner) * inv_unit_), std::numeric_limits<float>::infinity());
+        q = corner + static_cast<double>(offset) * unit_;
       } else if (!(q < upper)) {
-        offset = std::nextafter(static_cast<float>(upper - corner), 0.0f);
-        q = corner + static_cast<double>(offset);
+        offset = std::nextafter(static_cast<float>((upper - corner) * inv_unit_), 0.0f);
+        q = corner + static_cast<double>(offset) * unit_;
       }
       if (!(q >= lower && q < upper)) return false;
       p[i] = q;
@@ -435,8 +442,9 @@ class BridsonGrid {
           std::memcpy(&fb, &base[offsets[t + 1]], sizeof fb);
           const Pair a = __builtin_convertvector(fa, Pair), b = __builtin_convertvector(fb, Pair);
 #endif
-          xs[0] = __builtin_shufflevector(a, b, 0, 2);
-          xs[1] = __builtin_shufflevector(a, b, 1, 3);
+          const Pair unit = {unit_, unit_};  // a power of two: exact
+          xs[0] = __builtin_shufflevector(a, b, 0, 2) * unit;
+          xs[1] = __builtin_shufflevector(a, b, 1, 3) * unit;
           for (int i = 0; i < D; ++i)
             xs[i] += OneTile ? Pair{corner[i][0], corner[i][0]} : Pair{corner[i][step[i][t]], corner[i][step[i][t + 1]]};
         } else {
@@ -556,7 +564,8 @@ class BridsonGrid {
 
   static constexpr double kInnerFloat = 1.0 - 1e-3;
   double radius2_, inner_radius2_;
-  float inner_radius2_f_;
+  double unit_ = 1.0, inv_unit_ = 1.0;  // lattice offsets count units of unit_
+  float inner_radius2_f_ = 0.0f;         // in units of unit_ squared
   std::array<double, D> lo_{}, extent_{}, half_{}, inv_edge_{}, twice_inv_edge_{};
   std::array<int, D> cells_{}, padded_{};
   std::array<unsigned, D> interior_cells_{};

@@ -101,6 +101,23 @@ TEST(Bridson, LatticeAcrossTilesAndFarFromTheOrigin) {
     }
 }
 
+// The lattice counts offsets in a power of two near the cell's edge, so that
+// floats hold them at any scale: a square 1e-140 or 1e140 wide fills as the
+// unit square does (in float units of the domain itself they would underflow
+// or overflow, and nearly every candidate would be refused).
+TEST(Bridson, LatticeAtEveryScale) {
+  BridsonParams params;
+  params.radius = 0.02;
+  const auto unit = bridson(params, Domain<2>::unit(true), 3);
+  for (const double scale : {1e-140, 1e-20, 1e20, 1e140}) {
+    params.radius = 0.02 * scale;
+    const auto square = Domain<2>::torus({0, 0}, {scale, scale});
+    const auto points = bridson(params, square, 3);
+    EXPECT_NEAR(static_cast<double>(points.size()), static_cast<double>(unit.size()), 0.03 * unit.size()) << scale;
+    expect_poisson_disk(points, square, params.radius);
+  }
+}
+
 TEST(Bridson, CountGivesExactlyThatMany) {
   for (std::uint64_t n : {1u, 2u, 7u, 1000u}) {
     GenerateRequest r;
