@@ -49,9 +49,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 #include <limits>
 #include <sstream>
 #include <string>
@@ -81,10 +78,9 @@ class BridsonGrid {
   // In 2D the sample itself, as float offsets from the lower corner of its
   // tile of kTile x kTile cells: the scan reads it with no indirection (twice
   // as fast as through an index at 10^6) in half the bytes of double
-  // coordinates. Every sample is put on that lattice (steps of at most 2^-24
-  // of a tile) before it is tested (is_free), so tile corner + offset, rounded
-  // to double, is the sample exactly and the scan's distances are the
-  // output's. 1D keeps double coordinates (no smaller). In 3D, with nine
+  // coordinates. Every sample is put on that lattice (a move of under 3e-5 r)
+  // before it is tested (is_free), so tile corner + offset, rounded to
+  // double, is the sample exactly and the scan's distances are the output's. 1D keeps double coordinates (no smaller). In 3D, with nine
   // cells a sample, coordinates made the grid ten times the output (224 MB
   // at 10^6); there a cell holds the sample's index in the store (0, the NaN
   // marker, when empty): a sixth of the memory and no slower (measured,
@@ -391,7 +387,8 @@ class BridsonGrid {
     return true;
   }
 
-  // The cells of `offsets` around p's cell, kBlock at a time with one branch
+  // False if a sample lies closer than sqrt(limit2) to p. Reads the cells of
+  // the half-cell's list around p's cell, kBlock at a time with one branch
   // a block (the exit is taken once, not tested and mispredicted once a
   // cell), two cells a vector: the arithmetic is Domain::distance2's, term
   // for term, lane by lane (an empty cell's NaN compares as "not closer").
@@ -401,7 +398,7 @@ class BridsonGrid {
   // arithmetic where the correction never applies (is_free's `interior`).
   template <bool MinImage, bool OneTile>
   [[gnu::always_inline]] bool scan(const Point<D>& p, std::size_t cell, [[maybe_unused]] const std::array<int, D>& at,
-                                   unsigned half, double radius2_) const {
+                                   unsigned half, double limit2) const {
     typedef double Pair __attribute__((vector_size(16)));
     typedef std::int64_t Mask __attribute__((vector_size(16)));
     const std::vector<std::ptrdiff_t>& offsets = offsets_[half];
@@ -416,7 +413,7 @@ class BridsonGrid {
         corner[i] = tile_corner_[i].data() + at[i];
         step[i] = steps_[half][i].data();
       }
-    const Pair radius2 = {radius2_, radius2_};
+    const Pair radius2 = {limit2, limit2};
     for (std::size_t j = 0; j < offsets.size(); j += kBlock) {
       if constexpr (kIndexed) {
         // A block of empty cells (a third of them in 3D) is passed over
@@ -432,16 +429,11 @@ class BridsonGrid {
         if constexpr (kLattice) {
           // Both offsets of a cell converted at once, then regrouped by axis;
           // plus the tile corners: the samples exactly as to_lattice() made them.
-#if defined(__SSE2__)
-          const Pair a = (Pair)_mm_cvtps_pd(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&base[offsets[t]]))));
-          const Pair b = (Pair)_mm_cvtps_pd(_mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(&base[offsets[t + 1]]))));
-#else
           typedef float Floats __attribute__((vector_size(8)));
           Floats fa, fb;
           std::memcpy(&fa, &base[offsets[t]], sizeof fa);
           std::memcpy(&fb, &base[offsets[t + 1]], sizeof fb);
           const Pair a = __builtin_convertvector(fa, Pair), b = __builtin_convertvector(fb, Pair);
-#endif
           const Pair unit = {unit_, unit_};  // a power of two: exact
           xs[0] = __builtin_shufflevector(a, b, 0, 2) * unit;
           xs[1] = __builtin_shufflevector(a, b, 1, 3) * unit;
