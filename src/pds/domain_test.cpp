@@ -76,5 +76,20 @@ TEST(Domain, RefusesExtentsOutsideTheRadiusRange) {
   EXPECT_THROW(bridson<2>({.radius = 0.1}, Domain<2>::box({{0.0, 0.0}}, {{1.8e-322, 1.0}}), 1), InvalidArgument);
 }
 
+// The registry's copy of a sampler's output: from a set it may consume, it
+// copies 2 MiB at a time and gives each block's pages back; the cloud must be
+// the one the plain copy makes, at sizes below, at and past a block.
+TEST(PointCloud, FromAMovedSetEqualsTheCopy) {
+  for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{131072}, std::size_t{300001}}) {
+    PointSet<2> points(n);
+    for (std::size_t i = 0; i < n; ++i) points[i] = {0.5 * static_cast<double>(i), -static_cast<double>(i) / 3.0};
+    const PointCloud copied = PointCloud::from<2>(points);
+    const PointCloud moved = PointCloud::from<2>(std::move(points));
+    EXPECT_EQ(moved, copied) << n;
+    EXPECT_EQ(moved.size(), n);
+    EXPECT_TRUE(points.empty());  // NOLINT(bugprone-use-after-move): documented to be left empty
+  }
+}
+
 }  // namespace
 }  // namespace pds
