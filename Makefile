@@ -82,7 +82,11 @@ san-build: deps
 # elimination tests run both); Sobol's net quality of scrambled pairs (31 s
 # instrumented: 1,024 points in all 21,201 dimensions five times; the other
 # Sobol tests and the registry's 21,201D cases run the scrambles); fpo's
-# relative radius in a box (14 s; the registry's box cases run its code).
+# relative radius in a box (14 s; the registry's box cases run its code);
+# the registry's 5D cases of best-candidate, gbn and dart-throwing (31, 11
+# and 10 s: from 4D each is one code for every dimension, run at 4D);
+# tests whose time is their oracle or their size, with their code run by
+# smaller tests (SAN_SLOW, 13-23 s each, below).
 # What it runs: docs/reliability.md.
 # ctest's tests (-E, a regular expression) and GoogleTest's inside pds_tests
 # (GTEST_FILTER, patterns joined by ':'; the line breaks' spaces are removed).
@@ -94,7 +98,8 @@ SAN_GTEST_EXCLUDE = *SameDistributionAsTheLiteralMethod*:*MatchesMaximalDartThro
 *PrefixSpectrumMatches*:*Maximality.LatticeE8*:*SpreadsPointsIntoBlueNoise*:*Ebeida.FiveDimensions*:\
 *Registry/*_6d_*:*Registry/*_7d_*:*Registry/*_8d_*:*Maximality.LatticeD5*:\
 *Elimination.SweepsRemoveWhatTheHeapRemovesInItsOrder*:*Sobol.ScrambledPairsKeepTheirNetQuality*:\
-*Fpo.ReachesTheOptimizedRelativeRadiusInABox*:$(SAN_EBEIDA_5D):$(SAN_WEI)
+*Fpo.ReachesTheOptimizedRelativeRadiusInABox*:*Registry/*best_candidate_5d_*:*Registry/*gbn_5d_*:\
+*Registry/*dart_throwing_5d_*:$(SAN_EBEIDA_5D):$(SAN_WEI):$(SAN_SLOW)
 # ebeida's 5D registry cases with the most points (96, 41, 24, 23, 22 and 21 s
 # instrumented, then 10-20 s each for the short periods from 150 r); its 5D
 # code runs instrumented in the others (the smaller short periods, the sweep).
@@ -102,12 +107,20 @@ SAN_EBEIDA_5D = *SameSeedSameBytesOtherSeedOtherPoints/ebeida_5d*:*RadiusHoldsBe
 *PointsAreInsideTheDomainAndCountsAreRight/ebeida_5d*:*ShortPeriod.ValidSetOrClearRefusal/ebeida_5d_*_150r:\
 *ShortPeriod.ValidSetOrClearRefusal/ebeida_5d_*_220r:*ShortPeriod.ValidSetOrClearRefusal/ebeida_5d_*_233r:\
 *ShortPeriod.ValidSetOrClearRefusal/ebeida_5d_*_300r:*ShortPeriod.ValidSetOrClearRefusal/ebeida_5d_*_400r
-# wei from 4D (0.6 to 2.5 s each in Release): its 5D and 6D sets, its 5D thread
-# and saturation tests and its 5D registry cases (11-23 s each instrumented);
-# its 8D test, the 5D prefix test and the registry cases in 4D run the same
+# wei from 4D (0.6 to 2.5 s each in Release): its 5D, 6D and 8D sets, its 5D
+# thread and saturation tests and its 5D registry cases (11-23 s each
+# instrumented); the 5D prefix test and the registry cases in 4D run the same
 # code instrumented.
 SAN_WEI = *Wei.MinimumDistanceInsideAndReproducible5D*:*Wei.MinimumDistanceInsideAndReproducible6D*:\
-*Wei.SameBytesForOneTwoAndFourThreads5D*:*Wei.FiveDimensionsNearlySaturated*:*Registry/*/wei_5d_*
+*Wei.MinimumDistanceInsideAndReproducible8D*:*Wei.SameBytesForOneTwoAndFourThreads5D*:\
+*Wei.FiveDimensionsNearlySaturated*:*Registry/*/wei_5d_*
+# Halton's 1,000 axes at 7,919 points, three times a scramble (the registry's
+# 1,000D cases run the same code); jones far from the origin (its registry
+# cases run its code); the scalloped region's area against a ray quadrature
+# (the quadrature is the time; every dunbar-humphreys test runs the area);
+# gbn on 1 to 4 threads (the other gbn tests run its code).
+SAN_SLOW = *Halton.LargeBasesStratifyTheirAxesScrambledOrNot*:*Jones.MaximalFarFromTheOrigin*:\
+*ScallopedRegion.ExactAreaMatchesRayQuadrature*:*Gbn.SameSeedSamePointsForAnyThreads*
 sanitize: san-build
 	@cd $(SAN_BUILD) && $(SAN_ENV) PDS_SWEEP_SHARDS=$(SAN_SWEEP_SHARDS) GTEST_FILTER='-$(subst $(space),,$(SAN_GTEST_EXCLUDE))' \
 	  ctest --output-on-failure -j $(JOBS) -E "$(SAN_EXCLUDE)"

@@ -15,6 +15,8 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "pds/detail/format.h"
 #include "pds/domain.h"
@@ -78,7 +80,17 @@ class Grid {
 
   const Domain<D>& domain() const { return domain_; }
   const PointSet<D>& points() const { return points_; }
+  /// Hands the stored points over without a copy; the grid is spent. A
+  /// sampler's output is usually its grid's whole content, and a copy of it
+  /// beside the grid would be the run's peak.
+  PointSet<D> take_points() && { return std::move(points_); }
   std::size_t size() const { return points_.size(); }
+  /// Room for n points, so that a sampler that knows its count never holds
+  /// a vector and its doubled copy at once.
+  void reserve(std::size_t n) {
+    points_.reserve(n);
+    next_.reserve(n);
+  }
   std::size_t cell_count() const { return head_.size(); }
   int cells(int axis) const { return hood_.cells(axis); }
   double cell_edge(int axis) const { return hood_.edge(axis); }

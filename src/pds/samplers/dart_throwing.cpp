@@ -54,6 +54,7 @@ class AllPairsCheck {
     return true;
   }
   void add(const Point<D>& p) { points_.push_back(p); }
+  void reserve(std::size_t n) { points_.reserve(n); }
   PointSet<D> take() { return std::move(points_); }
 
  private:
@@ -70,7 +71,8 @@ class GridCheck {
       : grid_(Grid<D>::for_conflicts(domain, radius)), radius_(radius) {}
   bool is_free(const Point<D>& p) const { return !grid_.any_closer_than(p, radius_); }
   void add(const Point<D>& p) { grid_.insert(p); }
-  PointSet<D> take() { return grid_.points(); }
+  void reserve(std::size_t n) { grid_.reserve(n); }
+  PointSet<D> take() { return std::move(grid_).take_points(); }
 
  private:
   Grid<D> grid_;
@@ -82,6 +84,7 @@ PointSet<D> throw_darts(const DartThrowingParams& params, const Domain<D>& domai
   const std::uint64_t bound = params.max_failures ? params.max_failures : default_dart_failures(domain, params.radius);
   const std::uint64_t wanted = params.count.value_or(UINT64_MAX);
   Check check(domain, params.radius);
+  if (params.count) check.reserve(static_cast<std::size_t>(wanted));
   Rng rng(seed);
   std::uint64_t placed = 0, failures = 0;
   // With a radius alone the run ends on a streak of misses: its share of

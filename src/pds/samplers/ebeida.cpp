@@ -595,7 +595,7 @@ class EbeidaListSampler {
       open = refine(open);
     }
     progress_.finish();
-    return samples_.points();
+    return std::move(samples_).take_points();
   }
 
  private:

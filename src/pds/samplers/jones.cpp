@@ -281,7 +281,7 @@ class JonesSampler {
     progress.finish();
     // The grid holds the only copy of the points; free the triangulation first.
     cells_.clear();
-    return grid_.points();
+    return std::move(grid_).take_points();
   }
 
  private:

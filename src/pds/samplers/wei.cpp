@@ -785,7 +785,7 @@ class WeiUnitSampler : public WeiPasses<WeiUnitSampler<D>> {
       run_level(level);
     }
     progress_.finish();
-    return samples_.points();
+    return std::move(samples_).take_points();
   }
 
  private:
