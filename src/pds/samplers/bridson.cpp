@@ -740,6 +740,19 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
     const std::size_t slot = rng.below(active.size());
     const Point<D> centre = active[slot];
     grid.prefetch_around(centre);
+    // Look ahead (speed only: the picks stay the same). The stream draws
+    // nothing else in this loop, so the next pick is below(n') of its next
+    // number, n' the list's size after this pick, one more or one less:
+    // within one entry of what a copy of the stream draws for the size now.
+    // Those entries are fetched while this pick's candidates are tried; a
+    // random entry of a large list is otherwise a cache miss a pick (7% of
+    // a 3D run at 10^6, perf).
+    {
+      Rng ahead = rng;
+      const std::size_t next = ahead.below(active.size());
+      __builtin_prefetch(active.data() + (next == 0 ? 0 : next - 1));
+      __builtin_prefetch(active.data() + next + 1);
+    }
     bool found = false;
     for (int attempt = 0; attempt < k; ++attempt) {
       Point<D> c;
