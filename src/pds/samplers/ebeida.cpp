@@ -107,10 +107,17 @@ class BlockVector {
   T& operator[](std::size_t i) { return blocks_[i >> kShift][i & (kBlock - 1)]; }
   const T& operator[](std::size_t i) const { return blocks_[i >> kShift][i & (kBlock - 1)]; }
   std::size_t size() const { return size_; }
+  /// Frees the blocks that hold only elements before i (a reader done with
+  /// them); those elements must not be read again.
+  void release_before(std::size_t i) {
+    for (std::size_t b = released_; b < (i >> kShift) && b < blocks_.size(); ++b) blocks_[b].reset();
+    released_ = std::max(released_, i >> kShift);
+  }
 
  private:
   std::vector<std::unique_ptr<T[]>> blocks_;
   std::size_t size_ = 0;
+  std::size_t released_ = 0;  // blocks before this one are freed
 };
 
 template <int D>
@@ -336,6 +343,14 @@ class EbeidaSampler {
     sorted_ = samples_.size();
   }
 
+  /// Gives the pages past the slots in use back to the system. The slot
+  /// array only shrinks after level 0; a shrink_to_fit would copy it and
+  /// hold both copies at once (at 10^6 samples in 2D, in the first
+  /// refinement, the run's peak).
+  static void release_unused(std::vector<Open>& slots) {
+    detail::release_pages(slots.data() + slots.size(), (slots.capacity() - slots.size()) * sizeof(Open));
+  }
+
   /// Drops the settled slots; the open ones keep their order.
   void compact() {
     std::uint32_t kept = 0;
@@ -349,7 +364,7 @@ class EbeidaSampler {
     }
     open_.resize(kept);
     if (level_ > 0) subs_of_.resize(kept);
-    if (open_.capacity() > 4 * open_.size() + 1024) open_.shrink_to_fit();
+    release_unused(open_);
   }
 
   /// Splits the open sub-cells of every open cell into 2^D children for the
@@ -415,6 +430,11 @@ class EbeidaSampler {
       const auto begin = static_cast<std::uint32_t>(subs.size());
       const Subs parent_subs = parent_level == 0 ? Subs{0, 1} : subs_of_[slot];
       const std::uint32_t parents = parent_subs.count;
+      // The slots' sub-cells lie in slot order: those before this slot's are
+      // read for the last time, so their blocks go back now and the parent
+      // level's codes are not held whole beside the children's (at 10^6 in
+      // 2D that pair was the run's peak).
+      if (parent_level > 0) subs_.release_before(parent_subs.begin);
       for (std::uint32_t k = 0; k < parents; ++k) {
         const Code parent = parent_level == 0 ? 0 : subs_[parent_subs.begin + k];
         // The children's faces along each axis, relative to the cell's corner
@@ -480,9 +500,9 @@ class EbeidaSampler {
       subs_of.push_back(Subs{begin, count});
     }
     open_.resize(kept);
-    // Level 0 has a slot for every cell, level 1 for 40% of them: keeping the
-    // first array would hold its 16 bytes a cell through the next level.
-    if (open_.capacity() > 2 * open_.size() + 1024) open_.shrink_to_fit();
+    // Level 0 has a slot for every cell, level 1 for 40% of them: the first
+    // array's 16 bytes a cell must not be held through the next level.
+    release_unused(open_);
     // Open sub-cells peak at about 1.6 per grid cell (3D, level 2; 0.8 in
     // 2D): a level that leaves far more would keep growing 2^D-fold with each
     // further one, so memory is capped here rather than by the level bound.
