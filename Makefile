@@ -118,9 +118,15 @@ SAN_WEI = *Wei.MinimumDistanceInsideAndReproducible5D*:*Wei.MinimumDistanceInsid
 # 1,000D cases run the same code); jones far from the origin (its registry
 # cases run its code); the scalloped region's area against a ray quadrature
 # (the quadrature is the time; every dunbar-humphreys test runs the area);
-# gbn on 1 to 4 threads (the other gbn tests run its code).
+# gbn on 1 to 4 threads (the other gbn tests run its code); and five more
+# statistical checks (7-8 s each): wei against maximal dart throwing, SciPy's
+# loop against SciPy's law, fpo's relative radius on the torus, jitter's torus
+# discrepancy against its bound (SweepMatchesBruteForce runs the sweep), the
+# stratified render against the uniform one.
 SAN_SLOW = *Halton.LargeBasesStratifyTheirAxesScrambledOrNot*:*Jones.MaximalFarFromTheOrigin*:\
-*ScallopedRegion.ExactAreaMatchesRayQuadrature*:*Gbn.SameSeedSamePointsForAnyThreads*
+*ScallopedRegion.ExactAreaMatchesRayQuadrature*:*Gbn.SameSeedSamePointsForAnyThreads*:\
+*Wei.DefaultsMatchMaximalDartThrowing*:*Bridson.ScipyLoopFollowsScipysLaw*:*Fpo.ReachesTheOptimizedRelativeRadius*:\
+*TorusDiscrepancy.WithinTheStrataBoundForJitter*:*Render.StratifiedBeatsUniformRandomOnTheZonePlate*
 sanitize: san-build
 	@cd $(SAN_BUILD) && $(SAN_ENV) PDS_SWEEP_SHARDS=$(SAN_SWEEP_SHARDS) GTEST_FILTER='-$(subst $(space),,$(SAN_GTEST_EXCLUDE))' \
 	  ctest --output-on-failure -j $(JOBS) -E "$(SAN_EXCLUDE)"
