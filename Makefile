@@ -86,7 +86,7 @@ san-build: deps
 # the registry's 5D cases of best-candidate, gbn and dart-throwing (31, 11
 # and 10 s: from 4D each is one code for every dimension, run at 4D);
 # tests whose time is their oracle or their size, with their code run by
-# smaller tests (SAN_SLOW, 13-23 s each, below).
+# smaller tests (SAN_SLOW, 7-18 s each, below).
 # What it runs: docs/reliability.md.
 # ctest's tests (-E, a regular expression) and GoogleTest's inside pds_tests
 # (GTEST_FILTER, patterns joined by ':'; the line breaks' spaces are removed).
