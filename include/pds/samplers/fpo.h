@@ -16,7 +16,8 @@
 namespace pds {
 
 struct FpoParams {
-  /// Sweeps at most (each moves every point once, in index order), >= 1.
+  /// Sweeps at most (each moves every point once, along a Hilbert curve
+  /// through the starting set), >= 1.
   int sweeps = 1000;
   /// Stop rule: stop after a sweep that grows the minimum distance by less
   /// than this fraction (0: stop only when it does not grow at all), >= 0.
