@@ -50,6 +50,13 @@ void advise_huge_pages(void* p, std::size_t bytes) noexcept;
 /// zeros afterwards): for a block whose contents are no longer needed but
 /// which its owner frees later. A hint, ignored where not offered.
 void release_pages(void* p, std::size_t bytes) noexcept;
+/// Gives the pages past a vector's size back to the system, its capacity
+/// kept: for a vector that only shrinks, where shrink_to_fit would copy it
+/// and hold both copies at once.
+template <class T>
+void release_unused(std::vector<T>& v) noexcept {
+  release_pages(v.data() + v.size(), (v.capacity() - v.size()) * sizeof(T));
+}
 }  // namespace detail
 
 /// A point set whose dimension is known only at run time: what files hold and

@@ -228,7 +228,8 @@ const Method& elimination_method() {
       // conformance test asks (index of dispersion 0.60-0.79 in 4D-8D,
       // against below 0.6); the sampler itself takes every dimension.
       .dims = {1, 3},
-      // Measured 20.9 in 1D, 15.8 in 2D, 14.2 in 3D (5N candidates).
+      // Measured 13.4 in 1D, 9.6 in 2D, 8.4 in 3D (5N candidates, white
+      // noise); 14.2 in 2D under a radius field (a scale a candidate, twice).
       .memory_ratio = 25,
       .memory_ratio_from_dim = {{2, 18}},
       .memory_scales_with = "candidates",  // the candidates are what takes the memory

@@ -343,14 +343,6 @@ class EbeidaSampler {
     sorted_ = samples_.size();
   }
 
-  /// Gives the pages past the slots in use back to the system. The slot
-  /// array only shrinks after level 0; a shrink_to_fit would copy it and
-  /// hold both copies at once (at 10^6 samples in 2D, in the first
-  /// refinement, the run's peak).
-  static void release_unused(std::vector<Open>& slots) {
-    detail::release_pages(slots.data() + slots.size(), (slots.capacity() - slots.size()) * sizeof(Open));
-  }
-
   /// Drops the settled slots; the open ones keep their order.
   void compact() {
     std::uint32_t kept = 0;
@@ -364,7 +356,7 @@ class EbeidaSampler {
     }
     open_.resize(kept);
     if (level_ > 0) subs_of_.resize(kept);
-    release_unused(open_);
+    detail::release_unused(open_);  // a copy to shrink it was the run's peak (10^6 in 2D)
   }
 
   /// Splits the open sub-cells of every open cell into 2^D children for the
@@ -502,7 +494,7 @@ class EbeidaSampler {
     open_.resize(kept);
     // Level 0 has a slot for every cell, level 1 for 40% of them: the first
     // array's 16 bytes a cell must not be held through the next level.
-    release_unused(open_);
+    detail::release_unused(open_);
     // Open sub-cells peak at about 1.6 per grid cell (3D, level 2; 0.8 in
     // 2D): a level that leaves far more would keep growing 2^D-fold with each
     // further one, so memory is capped here rather than by the level bound.

@@ -43,9 +43,10 @@
 // and k ~ 18 (2D) or ~30 (3D) neighbours within d_max for M = 5N, plus a sweep
 // over the live candidates per band (about 10 bands) and the heap's O(log M)
 // for the last few percent; progressive order adds the same on N, N/2, ...
-// samples. Memory: the sorted candidates and an 8-byte weight and a 4-byte
-// rank each, the grid's cell starts (about 4 cells a candidate), and a 16-byte
-// record per removal.
+// samples. Memory: the candidates, sorted in place when elimination() drew
+// them (eliminate() copies its caller's), an 8-byte weight and a 4-byte
+// original index each, the grid's cell starts (about 4 cells a candidate), and
+// in the progressive rounds a 4-byte rank and a 16-byte record a removal.
 
 #include "pds/samplers/elimination.h"
 
@@ -117,12 +118,18 @@ struct Near {
 template <int D>
 class CellIndex {
  public:
-  CellIndex(const Domain<D>& domain, std::span<const Point<D>> points, double reach) : domain_(domain), reach_(reach) {
+  CellIndex(const Domain<D>& domain, std::span<const Point<D>> points, double reach)
+      : CellIndex(domain, PointSet<D>(points.begin(), points.end()), reach) {}
+
+  /// Takes the points over and sorts them in place: no second copy of them
+  /// (the 5N candidates are most of elimination's memory).
+  CellIndex(const Domain<D>& domain, PointSet<D>&& points, double reach)
+      : domain_(domain), reach_(reach), points_(std::move(points)) {
     // Cells of edge about reach / 2 (a window of 5 cells an axis) up to 3D,
     // reach beyond (3 an axis: 5^D cells would outnumber the points), fewer
     // where the grid would outgrow the points (a thin axis, or a tiny set in
     // a large domain).
-    const double max_cells = std::min<double>(kMaxGridCells, 4.0 * static_cast<double>(points.size()) + 64.0);
+    const double max_cells = std::min<double>(kMaxGridCells, 4.0 * static_cast<double>(points_.size()) + 64.0);
     std::array<int, D> cells;
     double edge = D <= 3 ? reach / 2.0 : reach;
     while (true) {
@@ -139,30 +146,41 @@ class CellIndex {
       scale_ = std::max({scale_, std::abs(domain.lo[i]), std::abs(domain.hi[i])});
     }
     hood_ = GridNeighbourhood<D>(domain, cells);
-    // Counting sort by cell, stable: ties keep the input order.
-    std::vector<std::uint32_t> cell_of(points.size());
+    // Counting sort by cell, stable: ties keep the input order. `to[k]` is
+    // first point k's cell, then its place in the sorted order.
+    const std::size_t n = points_.size();
+    std::vector<std::uint32_t> to(n);
     start_.assign(hood_.size() + 1, 0);
-    for (std::size_t k = 0; k < points.size(); ++k) {
+    for (std::size_t k = 0; k < n; ++k) {
       std::size_t c = 0;
       for (int i = 0; i < D; ++i) {
-        const double u = std::floor((points[k][i] - domain.lo[i]) * inv_edge_[i]);
+        const double u = std::floor((points_[k][i] - domain.lo[i]) * inv_edge_[i]);
         c += static_cast<std::size_t>(std::clamp(u, 0.0, static_cast<double>(cells[i] - 1))) * hood_.stride(i);
       }
-      cell_of[k] = static_cast<std::uint32_t>(c);
+      to[k] = static_cast<std::uint32_t>(c);
       ++start_[c + 1];
     }
     for (std::size_t c = 0; c < hood_.size(); ++c) start_[c + 1] += start_[c];
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    points_.resize(points.size());
-    original_.resize(points.size());
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const std::uint32_t at = fill[cell_of[k]]++;
-      points_[at] = points[k];
-      original_[at] = static_cast<std::uint32_t>(k);
+    {
+      std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+      original_.resize(n);
+      for (std::size_t k = 0; k < n; ++k) {
+        to[k] = fill[to[k]]++;
+        original_[to[k]] = static_cast<std::uint32_t>(k);
+      }
     }
+    // The permutation applied by its cycles: each swap puts one point in
+    // its place.
+    for (std::size_t k = 0; k < n; ++k)
+      while (to[k] != k) {
+        const std::uint32_t there = to[k];
+        std::swap(points_[k], points_[there]);
+        std::swap(to[k], to[there]);
+      }
   }
 
   std::size_t size() const { return points_.size(); }
+  const Point<D>& point(std::uint32_t k) const { return points_[k]; }
 
   /// Drops the points `keep(k)` refuses, keeping the others' order; calls
   /// moved(from, to) for each kept point, in increasing order (to <= from).
@@ -182,6 +200,8 @@ class CellIndex {
     start_.back() = to;
     points_.resize(to);
     original_.resize(to);
+    detail::release_unused(points_);
+    detail::release_unused(original_);
   }
 
   std::uint32_t original(std::uint32_t k) const { return original_[k]; }
@@ -356,7 +376,12 @@ class RoundEliminator {
  public:
   RoundEliminator(std::span<const Point<D>> points, std::span<const double> scale, const Domain<D>& domain,
                   double d_max, const WeightFunction& weight)
-      : index_(domain, points, d_max * (Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0)),
+      : RoundEliminator(PointSet<D>(points.begin(), points.end()), scale, domain, d_max, weight) {}
+
+  /// Takes the points over (the index sorts them in place).
+  RoundEliminator(PointSet<D>&& points, std::span<const double> scale, const Domain<D>& domain, double d_max,
+                  const WeightFunction& weight)
+      : index_(domain, std::move(points), d_max * (Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0)),
         weight_(weight),
         weights_(index_.size(), 0) {
     const std::size_t n = index_.size();
@@ -376,6 +401,19 @@ class RoundEliminator {
         }
       weights_[k] += sum;
     }
+  }
+
+  /// After run(): the survivors' points in input order (run's first `keep`
+  /// indices, in the same order). The weights go first: the round is over.
+  PointSet<D> take_survivors() {
+    std::vector<Weight>().swap(weights_);
+    std::vector<std::uint32_t> by_input(index_.size());
+    for (std::uint32_t k = 0; k < by_input.size(); ++k) by_input[k] = k;
+    std::sort(by_input.begin(), by_input.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return index_.original(a) < index_.original(b); });
+    PointSet<D> out(by_input.size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = index_.point(by_input[i]);
+    return out;
   }
 
   /// Eliminates down to `keep`. Returns indices into the points: the
@@ -537,6 +575,7 @@ class RoundEliminator {
                      if constexpr (Scaled) scale_[to] = scale_[from];
                    });
     weights_.resize(index_.size());
+    detail::release_unused(weights_);
     if (ordered_) rank_.resize(index_.size());
     if constexpr (Scaled) scale_.resize(index_.size());
   }
@@ -586,29 +625,16 @@ void validate(const EliminationWeights& w) {
     throw InvalidArgument("elimination: gamma must be positive and finite, got " + detail::format_number(w.gamma));
 }
 
+// The paper's progressive order (section 5): the kept set is eliminated
+// again to half its size, with d_max grown to the half's spacing, and so on;
+// each half's eliminated go after the half's survivors. `kept` (indices into
+// `points`, `scale` beside them) is reordered so that every prefix of a
+// power of two is such a half.
 template <int D>
-std::vector<std::uint32_t> eliminate_all(std::span<const Point<D>> points, std::span<const double> scale,
-                                         std::size_t count, const Domain<D>& domain, double d_max,
-                                         const EliminationWeights& weights, bool progressive, int growth_dim,
-                                         const Progress& progress, bool by_heap) {
-  const double ratio = static_cast<double>(count) / static_cast<double>(points.size());
-  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
-  const WeightFunction first(d_max, d_min, weights.alpha);
-  // The work counted: every candidate removed, in the first round and in the
-  // halvings of the progressive order.
-  double removals = static_cast<double>(points.size() - count);
-  if (progressive)
-    for (std::size_t size = count; size >= 2; size /= 2) removals += static_cast<double>(size - size / 2);
-  ProgressReporter reporter(progress, removals);
-  double done = 0;
-  std::vector<std::uint32_t> kept =
-      eliminate_round<D>(points, scale, count, domain, d_max, first, reporter, done, /*ordered=*/false, by_heap);
-  done += static_cast<double>(points.size() - count);
-  kept.resize(count);
-  if (!progressive) {
-    reporter.finish();
-    return kept;
-  }
+void order_progressively(std::span<const Point<D>> points, std::span<const double> scale,
+                         std::vector<std::uint32_t>& kept, const Domain<D>& domain, double d_max, double d_min,
+                         double alpha, int growth_dim, ProgressReporter& reporter, double done, bool by_heap) {
+  const std::size_t count = kept.size();
   PointSet<D> out(count);
   std::vector<double> out_scale(scale.empty() ? 0 : count);
   std::vector<std::uint32_t> round(count);
@@ -618,7 +644,7 @@ std::vector<std::uint32_t> eliminate_all(std::span<const Point<D>> points, std::
       if (!scale.empty()) out_scale[i] = scale[kept[i]];
     }
     d_max *= std::pow(2.0, 1.0 / growth_dim);
-    const WeightFunction weight(d_max, d_min, weights.alpha);
+    const WeightFunction weight(d_max, d_min, alpha);
     const std::vector<std::uint32_t> order =
         eliminate_round<D>(std::span<const Point<D>>(out.data(), size),
                            std::span<const double>(out_scale.data(), scale.empty() ? 0 : size), size / 2, domain, d_max,
@@ -627,8 +653,73 @@ std::vector<std::uint32_t> eliminate_all(std::span<const Point<D>> points, std::
     for (std::size_t i = 0; i < size; ++i) round[i] = kept[order[i]];
     std::copy(round.begin(), round.begin() + static_cast<std::ptrdiff_t>(size), kept.begin());
   }
+}
+
+// The work counted by progress: every candidate removed, in the first round
+// and in the halvings of the progressive order.
+double removals_of(std::size_t candidates, std::size_t count, bool progressive) {
+  double removals = static_cast<double>(candidates - count);
+  if (progressive)
+    for (std::size_t size = count; size >= 2; size /= 2) removals += static_cast<double>(size - size / 2);
+  return removals;
+}
+
+template <int D>
+std::vector<std::uint32_t> eliminate_all(std::span<const Point<D>> points, std::span<const double> scale,
+                                         std::size_t count, const Domain<D>& domain, double d_max,
+                                         const EliminationWeights& weights, bool progressive, int growth_dim,
+                                         const Progress& progress, bool by_heap) {
+  const double ratio = static_cast<double>(count) / static_cast<double>(points.size());
+  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
+  const WeightFunction first(d_max, d_min, weights.alpha);
+  ProgressReporter reporter(progress, removals_of(points.size(), count, progressive));
+  std::vector<std::uint32_t> kept =
+      eliminate_round<D>(points, scale, count, domain, d_max, first, reporter, 0.0, /*ordered=*/false, by_heap);
+  kept.resize(count);
+  if (progressive)
+    order_progressively<D>(points, scale, kept, domain, d_max, d_min, weights.alpha, growth_dim, reporter,
+                           static_cast<double>(points.size() - count), by_heap);
   reporter.finish();
   return kept;
+}
+
+// eliminate_all on candidates it may consume: the first round's index takes
+// them over, and the later rounds work on the survivors alone, so the
+// candidates are held once (eliminate_all's caller keeps its own). The same
+// points out, in the same order.
+template <int D>
+PointSet<D> eliminate_consuming(PointSet<D>&& candidates, std::span<const double> scale, std::size_t count,
+                                const Domain<D>& domain, double d_max, const EliminationWeights& weights,
+                                bool progressive, const Progress& progress) {
+  const std::size_t m = candidates.size();
+  const double ratio = static_cast<double>(count) / static_cast<double>(m);
+  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
+  const WeightFunction first(d_max, d_min, weights.alpha);
+  ProgressReporter reporter(progress, removals_of(m, count, progressive));
+  PointSet<D> survivors;
+  std::vector<std::uint32_t> kept;
+  const auto first_round = [&]<bool Scaled>() {
+    RoundEliminator<D, Scaled> round(std::move(candidates), scale, domain, d_max, first);
+    kept = round.run(count, /*ordered=*/false, /*by_heap=*/false, reporter, 0.0);
+    survivors = round.take_survivors();
+  };
+  if (scale.empty())
+    first_round.template operator()<false>();
+  else
+    first_round.template operator()<true>();
+  if (!progressive) {
+    reporter.finish();
+    return survivors;
+  }
+  std::vector<double> survivors_scale(scale.empty() ? 0 : count);
+  for (std::size_t i = 0; i < survivors_scale.size(); ++i) survivors_scale[i] = scale[kept[i]];
+  for (std::uint32_t i = 0; i < count; ++i) kept[i] = i;  // now indices into the survivors
+  order_progressively<D>(survivors, survivors_scale, kept, domain, d_max, d_min, weights.alpha, D, reporter,
+                         static_cast<double>(m - count), false);
+  reporter.finish();
+  PointSet<D> out(count);
+  for (std::size_t i = 0; i < count; ++i) out[i] = survivors[kept[i]];
+  return out;
 }
 
 }  // namespace
@@ -695,7 +786,10 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   Rng rng(seed);
   PointSet<D> candidates(static_cast<std::size_t>(m));
   for (Point<D>& p : candidates) p = uniform_point(rng, domain);
-  return eliminate(candidates, params.count, domain, params.weights, params.progressive, params.progress);
+  const auto n = static_cast<std::size_t>(params.count);
+  const double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
+  return eliminate_consuming<D>(std::move(candidates), {}, n, domain, d_max, params.weights, params.progressive,
+                                params.progress);
 }
 
 template <int D>
@@ -765,11 +859,8 @@ PointSet<D> elimination(const EliminationParams& params, const SamplingConstrain
   const double volume = domain.volume() * static_cast<double>(m) / draws;
   const auto n = static_cast<std::size_t>(count);
   const double d_max = 2.0 * max_packing_radius(volume, n, D);
-  const std::vector<std::uint32_t> kept = detail::eliminate_indices<D>(
-      candidates, scale, n, domain, d_max, params.weights, params.progressive, D, params.progress);
-  PointSet<D> out(n);
-  for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
-  return out;
+  return eliminate_consuming<D>(std::move(candidates), scale, n, domain, d_max, params.weights, params.progressive,
+                                params.progress);
 }
 
 #define PDS_INSTANTIATE(D)                                                                                          \

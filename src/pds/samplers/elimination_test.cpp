@@ -14,6 +14,7 @@
 #include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
 #include "pds/registry.h"
+#include "pds/rng.h"
 #include "pds/samplers/random.h"
 
 namespace pds {
@@ -155,6 +156,26 @@ TEST(Elimination, ExactCountInsideAndSameSeedSameBytes) {
       ASSERT_EQ(c.size(), n);
       for (const auto& p : c) EXPECT_TRUE(box.contains(p)) << p;
     }
+}
+
+// elimination() hands the candidates it draws to the first round, which sorts
+// them in place, and runs the later rounds on the survivors alone;
+// eliminate() keeps its caller's candidates and works by index. Both must
+// give the same points in the same order.
+TEST(Elimination, DrawnCandidatesGiveWhatTheCallersCandidatesGive) {
+  for (bool progressive : {false, true})
+    for (bool torus : {false, true})
+      for (std::uint64_t n : {1u, 7u, 600u}) {
+        const Domain<2> domain{{-3, 1}, {-1, 1.5}, torus};
+        Rng rng(21);
+        PointSet<2> candidates(5 * n);
+        for (Point<2>& p : candidates) p = uniform_point(rng, domain);
+        const PointSet<2> drawn = elimination<2>({.count = n, .progressive = progressive}, domain, 21);
+        const PointSet<2> given = eliminate<2>(candidates, n, domain, {}, progressive);
+        ASSERT_EQ(drawn.size(), n);
+        EXPECT_EQ(0, std::memcmp(drawn.data(), given.data(), n * sizeof(Point<2>)))
+            << "progressive " << progressive << ", torus " << torus << ", n " << n;
+      }
 }
 
 TEST(Elimination, ProgressiveOrderIsAPermutationOfTheKeptSet) {
