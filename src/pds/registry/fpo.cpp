@@ -22,7 +22,7 @@ const Method& fpo_method() {
       .exact_count = true,
       .equal_periods = true,
       .dims = {2, 2},
-      .memory_ratio = 17,
+      .memory_ratio = 15,
       .params = {{"sweeps", 1000, 1, 100000, true, "most sweeps (each moves every point once)"},
                  {"tolerance", 1e-5, 0, 1, false,
                   "stop after a sweep that grows the minimum distance by less than this fraction"},
