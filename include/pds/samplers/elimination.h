@@ -90,4 +90,11 @@ template <int D>
 PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const Domain<D>& domain,
                       const EliminationWeights& weights = {}, bool progressive = true, const Progress& progress = {});
 
+/// The same on candidates the caller gives up: they are sorted in place
+/// instead of copied, so the candidates are held once (at 5N candidates in
+/// 2D, 80 of the 240 MB a copy would take at N = 10^6). The same points out.
+template <int D>
+PointSet<D> eliminate(PointSet<D>&& candidates, std::uint64_t count, const Domain<D>& domain,
+                      const EliminationWeights& weights = {}, bool progressive = true, const Progress& progress = {});
+
 }  // namespace pds

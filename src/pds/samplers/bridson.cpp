@@ -816,7 +816,7 @@ PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<
       fails = next;
     }
   }
-  return eliminate(points, count, domain, {}, /*progressive=*/false,
+  return eliminate(std::move(points), count, domain, {}, /*progressive=*/false,
                    part_of(params.progress, kCountParts - 1, kCountParts));
 }
 

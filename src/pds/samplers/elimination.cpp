@@ -56,6 +56,7 @@
 #include <span>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "elimination_detail.h"
 #include "pds/analysis/relative_radius.h"
@@ -747,7 +748,7 @@ void validate_elimination_weights(const EliminationWeights& weights) { validate(
 }  // namespace detail
 
 template <int D>
-PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const Domain<D>& domain,
+PointSet<D> eliminate(PointSet<D>&& candidates, std::uint64_t count, const Domain<D>& domain,
                       const EliminationWeights& weights, bool progressive, const Progress& progress) {
   domain.validate();
   validate(weights);
@@ -763,13 +764,15 @@ PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const 
       os << "elimination: candidate " << p << " lies outside " << domain;
       throw InvalidArgument(os.str());
     }
-  const std::size_t n = static_cast<std::size_t>(count);
+  const auto n = static_cast<std::size_t>(count);
   const double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
-  const std::vector<std::uint32_t> kept =
-      detail::eliminate_indices<D>(candidates, {}, n, domain, d_max, weights, progressive, D, progress);
-  PointSet<D> out(n);
-  for (std::size_t i = 0; i < n; ++i) out[i] = candidates[kept[i]];
-  return out;
+  return eliminate_consuming<D>(std::move(candidates), {}, n, domain, d_max, weights, progressive, progress);
+}
+
+template <int D>
+PointSet<D> eliminate(const PointSet<D>& candidates, std::uint64_t count, const Domain<D>& domain,
+                      const EliminationWeights& weights, bool progressive, const Progress& progress) {
+  return eliminate(PointSet<D>(candidates), count, domain, weights, progressive, progress);
 }
 
 template <int D>
@@ -786,10 +789,7 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   Rng rng(seed);
   PointSet<D> candidates(static_cast<std::size_t>(m));
   for (Point<D>& p : candidates) p = uniform_point(rng, domain);
-  const auto n = static_cast<std::size_t>(params.count);
-  const double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
-  return eliminate_consuming<D>(std::move(candidates), {}, n, domain, d_max, params.weights, params.progressive,
-                                params.progress);
+  return eliminate(std::move(candidates), params.count, domain, params.weights, params.progressive, params.progress);
 }
 
 template <int D>
@@ -874,6 +874,8 @@ PointSet<D> elimination(const EliminationParams& params, const SamplingConstrain
       const EliminationWeights&, bool, int);                                                                        \
   template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                   \
   template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, \
+                                    bool, const Progress&);                                                         \
+  template PointSet<D> eliminate<D>(PointSet<D>&&, std::uint64_t, const Domain<D>&, const EliminationWeights&,      \
                                     bool, const Progress&);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE

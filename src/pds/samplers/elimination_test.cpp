@@ -159,9 +159,9 @@ TEST(Elimination, ExactCountInsideAndSameSeedSameBytes) {
 }
 
 // elimination() hands the candidates it draws to the first round, which sorts
-// them in place, and runs the later rounds on the survivors alone;
-// eliminate() keeps its caller's candidates and works by index. Both must
-// give the same points in the same order.
+// them in place, and runs the later rounds on the survivors alone; the
+// index path (eliminate_indices, which keeps its caller's candidates) must
+// pick the same points in the same order.
 TEST(Elimination, DrawnCandidatesGiveWhatTheCallersCandidatesGive) {
   for (bool progressive : {false, true})
     for (bool torus : {false, true})
@@ -171,7 +171,11 @@ TEST(Elimination, DrawnCandidatesGiveWhatTheCallersCandidatesGive) {
         PointSet<2> candidates(5 * n);
         for (Point<2>& p : candidates) p = uniform_point(rng, domain);
         const PointSet<2> drawn = elimination<2>({.count = n, .progressive = progressive}, domain, 21);
-        const PointSet<2> given = eliminate<2>(candidates, n, domain, {}, progressive);
+        const double d_max = 2.0 * max_packing_radius(domain.volume(), n, 2);
+        const std::vector<std::uint32_t> kept =
+            detail::eliminate_indices<2>(candidates, {}, n, domain, d_max, {}, progressive, 2);
+        PointSet<2> given(n);
+        for (std::size_t i = 0; i < n; ++i) given[i] = candidates[kept[i]];
         ASSERT_EQ(drawn.size(), n);
         EXPECT_EQ(0, std::memcmp(drawn.data(), given.data(), n * sizeof(Point<2>)))
             << "progressive " << progressive << ", torus " << torus << ", n " << n;
