@@ -41,11 +41,11 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
 #include <CGAL/Periodic_2_Delaunay_triangulation_traits_2.h>
+#include <CGAL/Hilbert_sort_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/spatial_sort.h>
 #include <boost/property_map/function_property_map.hpp>
-#include <CGAL/Hilbert_sort_2.h>
-#include <CGAL/Spatial_sort_traits_adapter_2.h>
 
 #include <algorithm>
 #include <array>
@@ -150,8 +150,9 @@ class Optimizer {
     //
     // Sweeps visit the points along one Hilbert curve of the start: points
     // move little, so a point's triangulation is mostly still in cache from
-    // its predecessor's move (4x faster sweeps at 10^5 points than in index
-    // order).
+    // its predecessor's move. With the insertion order (the triangulation's
+    // records then lie in memory roughly in the order of space), a sweep at
+    // 10^5 points went from 0.9 to 0.2 s.
     auto location = [this](std::uint32_t i) { return to_cgal(points_[i]); };
     using SortTraits = CGAL::Spatial_sort_traits_adapter_2<
         Kernel, boost::function_property_map<decltype(location), std::uint32_t, typename Triangulation::Point>>;
