@@ -119,9 +119,6 @@ struct Near {
 template <int D>
 class CellIndex {
  public:
-  CellIndex(const Domain<D>& domain, std::span<const Point<D>> points, double reach)
-      : CellIndex(domain, PointSet<D>(points.begin(), points.end()), reach) {}
-
   /// Takes the points over and sorts them in place: no second copy of them
   /// (the 5N candidates are most of elimination's memory).
   CellIndex(const Domain<D>& domain, PointSet<D>&& points, double reach)
