@@ -42,10 +42,8 @@
 #include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
 #include <CGAL/Periodic_2_Delaunay_triangulation_traits_2.h>
 #include <CGAL/Hilbert_sort_2.h>
-#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/spatial_sort.h>
-#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <array>
@@ -153,19 +151,40 @@ class Optimizer {
     // its predecessor's move. With the insertion order (the triangulation's
     // records then lie in memory roughly in the order of space), a sweep at
     // 10^5 points went from 0.9 to 0.2 s.
-    auto location = [this](std::uint32_t i) { return to_cgal(points_[i]); };
-    using SortTraits = CGAL::Spatial_sort_traits_adapter_2<
-        Kernel, boost::function_property_map<decltype(location), std::uint32_t, typename Triangulation::Point>>;
-    const SortTraits by_location(boost::make_function_property_map<std::uint32_t>(location));
+    //
+    // Both sorts split at medians down to single points (threshold 1), by a
+    // strict order (IndexOrder): so the orders do not depend on how the
+    // standard library's nth_element arranges ties or small groups.
+    const IndexOrder by_location{&points_};
     visit_order_.resize(points_.size());
     std::iota(visit_order_.begin(), visit_order_.end(), 0u);
     std::vector<std::uint32_t> order = visit_order_;
-    CGAL::spatial_sort(order.begin(), order.end(), by_location);
+    CGAL::spatial_sort(order.begin(), order.end(), by_location, CGAL::Hilbert_sort_median_policy(),
+                       /*threshold_hilbert=*/1);
     Face hint;
     for (std::uint32_t i : order) hint = insert(i, hint)->face();
-    const CGAL::Hilbert_sort_2<SortTraits, CGAL::Hilbert_sort_median_policy> along_one_curve(by_location);
+    const CGAL::Hilbert_sort_2<IndexOrder, CGAL::Hilbert_sort_median_policy> along_one_curve(by_location, 1);
     along_one_curve(visit_order_.begin(), visit_order_.end());
   }
+
+  // The traits CGAL's spatial sorts ask for, on point indices: a coordinate,
+  // then the index, so that no two points compare equal.
+  struct IndexOrder {
+    using Point_2 = std::uint32_t;
+    struct Less {
+      const PointSet<2>* points;
+      int axis;
+      bool operator()(std::uint32_t a, std::uint32_t b) const {
+        const double pa = (*points)[a][axis], pb = (*points)[b][axis];
+        return pa < pb || (pa == pb && a < b);
+      }
+    };
+    using Less_x_2 = Less;
+    using Less_y_2 = Less;
+    Less less_x_2_object() const { return {points, 0}; }
+    Less less_y_2_object() const { return {points, 1}; }
+    const PointSet<2>* points;
+  };
 
   static typename Triangulation::Point to_cgal(const Point<2>& p) { return {p[0], p[1]}; }
 
