@@ -662,13 +662,19 @@ double removals_of(std::size_t candidates, std::size_t count, bool progressive) 
   return removals;
 }
 
+// The paper's weight limit (section 3.2): d_min = d_max (1 - (N/M)^gamma) beta,
+// for N kept of M candidates; the progressive rounds keep it.
+double weight_limit(double d_max, std::size_t count, std::size_t candidates, const EliminationWeights& weights) {
+  const double ratio = static_cast<double>(count) / static_cast<double>(candidates);
+  return d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
+}
+
 template <int D>
 std::vector<std::uint32_t> eliminate_all(std::span<const Point<D>> points, std::span<const double> scale,
                                          std::size_t count, const Domain<D>& domain, double d_max,
                                          const EliminationWeights& weights, bool progressive, int growth_dim,
                                          const Progress& progress, bool by_heap) {
-  const double ratio = static_cast<double>(count) / static_cast<double>(points.size());
-  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
+  const double d_min = weight_limit(d_max, count, points.size(), weights);
   const WeightFunction first(d_max, d_min, weights.alpha);
   ProgressReporter reporter(progress, removals_of(points.size(), count, progressive));
   std::vector<std::uint32_t> kept =
@@ -690,8 +696,7 @@ PointSet<D> eliminate_consuming(PointSet<D>&& candidates, std::span<const double
                                 const Domain<D>& domain, double d_max, const EliminationWeights& weights,
                                 bool progressive, const Progress& progress) {
   const std::size_t m = candidates.size();
-  const double ratio = static_cast<double>(count) / static_cast<double>(m);
-  const double d_min = d_max * (1.0 - std::pow(ratio, weights.gamma)) * weights.beta;
+  const double d_min = weight_limit(d_max, count, m, weights);
   const WeightFunction first(d_max, d_min, weights.alpha);
   ProgressReporter reporter(progress, removals_of(m, count, progressive));
   PointSet<D> survivors;
