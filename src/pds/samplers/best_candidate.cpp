@@ -73,6 +73,7 @@
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
 #include "pds/samplers/sizing.h"
+#include "block_vector.h"
 
 namespace pds {
 namespace {
@@ -394,27 +395,27 @@ class GapBoxes {
   /// Drops the dead boxes once they outnumber the live ones; a leaf's live
   /// boxes stay contiguous and every list keeps its order. (When this runs
   /// depends only on the state, so the output stays a function of the seed.)
+  /// In place: a second arena beside the first was the run's peak.
   void compact() {
     if (arena_.size() < 4096 || arena_.size() < 2 * live_boxes_) return;
-    std::vector<Box> kept;
-    kept.reserve(2 * live_boxes_ + 16);
     std::vector<std::uint32_t> where(arena_.size(), UINT32_MAX);
     live_max_all_ = -kInf;
+    std::uint32_t kept = 0;
     for (std::uint32_t k = 0; k < arena_.size(); ++k) {
       const Box& b = arena_[k];
       if (!live(b)) continue;
-      if (k == first_[b.leaf]) first_[b.leaf] = static_cast<std::uint32_t>(kept.size());
-      where[k] = static_cast<std::uint32_t>(kept.size());
-      kept.push_back(b);
+      if (k == first_[b.leaf]) first_[b.leaf] = kept;
+      where[k] = kept;
       live_max_all_ = std::max(live_max_all_, b.bound);
+      arena_[kept++] = b;  // kept <= k: no live box is overwritten before it is read
     }
+    arena_.truncate(kept);
     for (auto& list : lists_) {
       std::size_t out = 0;
       for (const std::uint32_t k : list)
         if (where[k] != UINT32_MAX) list[out++] = where[k];
       list.resize(out);
     }
-    arena_.swap(kept);
   }
 
   /// Calls visit(leaf) for leaves whose idle bound exceeds `t` (which visit
@@ -524,7 +525,9 @@ class GapBoxes {
   std::vector<double> live_max_;
   std::vector<char> dirty_;
   std::vector<std::size_t> dirty_list_, walk_;
-  std::vector<Box> arena_;
+  // In blocks that never move: a doubling vector held the old and the new
+  // buffer together, the run's peak (and compact() works in place).
+  detail::BlockVector<Box, 12> arena_;
   std::array<std::vector<std::uint32_t>, kMaxLevel + 1> lists_;
   std::size_t live_boxes_ = 0;
   double live_max_all_ = -kInf;
@@ -658,6 +661,12 @@ BestCandidateResult<D> best_candidate_run(const BestCandidateParams& params, con
   double typical = -1.0, theta = kInf;
 
   BestCandidateResult<D> result;
+  if (params.count) {
+    // Exactly the count: growing by doubling held the old and the new block
+    // together.
+    result.points.reserve(static_cast<std::size_t>(*params.count));
+    result.distance.reserve(static_cast<std::size_t>(*params.count));
+  }
   ProgressReporter progress(params.progress, expected);
   PointSet<D> near;
   auto place = [&](const Point<D>& p, double distance) {

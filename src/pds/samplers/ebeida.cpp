@@ -54,6 +54,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "block_vector.h"
 #include "cover_cells.h"
 #include "union_cover.h"
 #include "pds/detail/format.h"
@@ -90,35 +91,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // From here on the sampler lists open sub-cells and draws darts in sequence
 // (EbeidaListSampler); below, darts are swept in time order (EbeidaSampler).
 constexpr int kFirstListedDim = 5;
-
-/// Append-only storage in blocks of 2^16: growing never moves what is
-/// stored. A doubling vector of a level's sub-cell codes held three times the
-/// codes while it reallocated at level 1 (old and new buffer, the new one
-/// twice the size): the run's peak, 100 MB at 10^6 samples in 2D.
-template <class T>
-class BlockVector {
- public:
-  static constexpr std::size_t kShift = 16, kBlock = std::size_t{1} << kShift;
-  void push_back(const T& value) {
-    if ((size_ & (kBlock - 1)) == 0 && size_ >> kShift == blocks_.size())
-      blocks_.push_back(std::make_unique_for_overwrite<T[]>(kBlock));
-    (*this)[size_++] = value;
-  }
-  T& operator[](std::size_t i) { return blocks_[i >> kShift][i & (kBlock - 1)]; }
-  const T& operator[](std::size_t i) const { return blocks_[i >> kShift][i & (kBlock - 1)]; }
-  std::size_t size() const { return size_; }
-  /// Frees the blocks that hold only elements before i (a reader done with
-  /// them); those elements must not be read again.
-  void release_before(std::size_t i) {
-    for (std::size_t b = released_; b < (i >> kShift) && b < blocks_.size(); ++b) blocks_[b].reset();
-    released_ = std::max(released_, i >> kShift);
-  }
-
- private:
-  std::vector<std::unique_ptr<T[]>> blocks_;
-  std::size_t size_ = 0;
-  std::size_t released_ = 0;  // blocks before this one are freed
-};
 
 template <int D>
 class EbeidaSampler {
@@ -363,7 +335,7 @@ class EbeidaSampler {
   /// level now starting (halves along the axes whose delay is over; one
   /// along the others), keeping the children that no single disk covers.
   void refine(double start) {
-    BlockVector<Code> subs;
+    detail::BlockVector<Code> subs;
     std::vector<Subs> subs_of;
     subs_of.reserve(open_.size());  // at most one a slot: never reallocated
     // The open slots are rewritten in place (a slot moves only down, after it
@@ -521,7 +493,7 @@ class EbeidaSampler {
   Stencil near_;                                // the cells that may hold a sample closer than r to a point of a cell
   std::vector<std::int32_t> state_;
   std::vector<Open> open_;
-  BlockVector<Code> subs_;
+  detail::BlockVector<Code> subs_;
   std::vector<Subs> subs_of_;  // per slot, from level 1 on
   detail::UnionCover<D> union_;
   PointSet<D> samples_;

@@ -67,6 +67,7 @@
 #include "pds/error.h"
 #include "pds/portable_math.h"
 #include "pds/rng.h"
+#include "block_vector.h"
 
 namespace pds {
 namespace {
@@ -129,26 +130,22 @@ struct CellState {
   std::int8_t done = -1;            // the darts of levels 0..done are all decided (their nodes all exist)
 };
 
-/// Append-only storage whose elements never move, indexed by 32-bit numbers:
-/// the darts and sub-cells of one call, which the recursion holds references
-/// into while it adds more (one block of them instead of a list a cell).
+/// The darts and sub-cells of one call, which the recursion holds references
+/// into while it adds more (one block of them instead of a list a cell),
+/// indexed by 32-bit numbers.
 template <class T>
 class Arena {
  public:
-  std::uint32_t size() const { return size_; }
-  T& operator[](std::uint32_t i) { return blocks_[i >> kShift][i & kMask]; }
-  const T& operator[](std::uint32_t i) const { return blocks_[i >> kShift][i & kMask]; }
+  std::uint32_t size() const { return static_cast<std::uint32_t>(store_.size()); }
+  T& operator[](std::uint32_t i) { return store_[i]; }
+  const T& operator[](std::uint32_t i) const { return store_[i]; }
   void push_back(const T& v) {
-    if (size_ == UINT32_MAX) throw Failure("unbounded: more than 2^32 darts or sub-cells in one region");
-    if ((size_ & kMask) == 0) blocks_.push_back(std::make_unique<T[]>(kBlock));
-    blocks_[size_ >> kShift][size_ & kMask] = v;
-    ++size_;
+    if (store_.size() == UINT32_MAX) throw Failure("unbounded: more than 2^32 darts or sub-cells in one region");
+    store_.push_back(v);
   }
 
  private:
-  static constexpr std::uint32_t kShift = 11, kBlock = 1u << kShift, kMask = kBlock - 1;
-  std::vector<std::unique_ptr<T[]>> blocks_;
-  std::uint32_t size_ = 0;
+  detail::BlockVector<T, 11> store_;
 };
 
 /// What the common questions read of a cell, in a small record of its own
