@@ -161,6 +161,11 @@ class GapBoxes {
       half_diagonal_ += 0.25 * edge_[i] * edge_[i];
     }
     half_diagonal_ = std::sqrt(half_diagonal_) * (1.0 + 1e-9);
+    // Bounds are stored as floats in units of a power of two near the leaf's
+    // half diagonal: exact to scale, and far from float's limits at any scale
+    // of domain.
+    unit_ = std::ldexp(1.0, std::ilogb(half_diagonal_));
+    inv_unit_ = 1.0 / unit_;
     const std::size_t slots = tiles * kTileSlots;
     size_ = 1;
     while (size_ < slots) size_ *= 2;
@@ -197,17 +202,17 @@ class GapBoxes {
         }
         bound2 = std::min(bound2, far2);
       }
-      tree_[size_ + j] = std::sqrt(bound2) * (1.0 + 1e-12);
+      tree_[size_ + j] = stored(std::sqrt(bound2) * (1.0 + 1e-12));
     }
     for (std::size_t n = size_ - 1; n >= 1; --n) tree_[n] = std::max(tree_[2 * n], tree_[2 * n + 1]);
   }
 
   std::size_t leaves() const { return leaves_; }
   double leaf_volume() const { return volume_; }
-  double idle_bound(std::size_t leaf) const { return tree_[size_ + leaf]; }
-  double max_idle_bound() const { return tree_[1]; }
+  double idle_bound(std::size_t leaf) const { return bound(tree_[size_ + leaf]); }
+  double max_idle_bound() const { return bound(tree_[1]); }
   /// No point of the domain is farther than this from every sample.
-  double reach() const { return std::max(tree_[1], live_max_all_); }
+  double reach() const { return std::max(max_idle_bound(), live_max_all_); }
 
   Point<D> leaf_lo(std::size_t leaf) const {
     const auto c = coords(leaf);
@@ -260,8 +265,8 @@ class GapBoxes {
       }
       const std::size_t leaf = id(cell);
       const double bound = std::sqrt(far2) * (1.0 + 1e-12);
-      if (bound < tree_[size_ + leaf]) set(leaf, bound);
-      if (count_[leaf] > 0 && !dirty_[leaf] && std::sqrt(near2) < live_max_[leaf]) {
+      if (bound < idle_bound(leaf)) set(leaf, bound);
+      if (count_[leaf] > 0 && !dirty_[leaf] && std::sqrt(near2) < this->bound(live_max_[leaf])) {
         dirty_[leaf] = 1;
         dirty_list_.push_back(leaf);
       }
@@ -361,7 +366,7 @@ class GapBoxes {
       arena_.push_back({lo, near[witness], upper, static_cast<std::uint32_t>(leaf), level});
       lists_[level].push_back(static_cast<std::uint32_t>(arena_.size() - 1));
       ++count_[leaf];
-      live_max_[leaf] = std::max(live_max_[leaf], upper);
+      live_max_[leaf] = std::max(live_max_[leaf], stored(upper));
       live_max_all_ = std::max(live_max_all_, upper);
     }
     live_boxes_ += count_[leaf];
@@ -370,7 +375,9 @@ class GapBoxes {
 
   /// Every sample within this distance of the leaf's centre must be passed
   /// to tighten(): the nearest sample of any point of the leaf is among them.
-  double near_radius(std::size_t leaf) const { return std::max(tree_[size_ + leaf], live_max_[leaf]) + half_diagonal_; }
+  double near_radius(std::size_t leaf) const {
+    return bound(std::max(tree_[size_ + leaf], live_max_[leaf])) + half_diagonal_;
+  }
 
   bool is_dirty(std::size_t leaf) const { return dirty_[leaf]; }
 
@@ -427,7 +434,7 @@ class GapBoxes {
     while (!walk_.empty()) {
       const std::size_t node = walk_.back();
       walk_.pop_back();
-      if (!(tree_[node] > t)) continue;
+      if (!(bound(tree_[node]) > t)) continue;
       if (node >= size_) {
         visit(node - size_);
         continue;
@@ -447,11 +454,21 @@ class GapBoxes {
   // Expected candidates a round below which a box that straddles the
   // threshold is not split further: few candidates are wasted on it.
 
+  // A bound as stored: the smallest float at least value / unit_ (a power of
+  // two, so the quotient is exact), read back exactly by bound(). Half the
+  // bytes of a double, and still an upper bound.
+  float stored(double value) const {
+    const double x = value * inv_unit_;
+    const float f = static_cast<float>(x);
+    return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  }
+  double bound(float value) const { return static_cast<double>(value) * unit_; }
+
   void set(std::size_t leaf, double value) {
     std::size_t node = size_ + leaf;
-    tree_[node] = value;
+    tree_[node] = stored(value);
     for (node /= 2; node >= 1; node /= 2) {
-      const double v = std::max(tree_[2 * node], tree_[2 * node + 1]);
+      const float v = std::max(tree_[2 * node], tree_[2 * node + 1]);
       if (v == tree_[node]) break;
       tree_[node] = v;
     }
@@ -520,9 +537,10 @@ class GapBoxes {
   static constexpr int kTile = D == 1 ? 64 : D == 2 ? 8 : 4;
   static constexpr std::size_t kTileSlots = 64;
   static_assert(D >= 4 || kTileSlots == std::size_t(kTile) * (D >= 2 ? kTile : 1) * (D >= 3 ? kTile : 1));
-  std::vector<double> tree_;  // idle bounds (leaves at size_ + leaf), max tree
+  double unit_ = 1.0, inv_unit_ = 1.0;  // of the stored bounds
+  std::vector<float> tree_;  // idle bounds (leaves at size_ + leaf), max tree
   std::vector<std::uint32_t> first_, count_;
-  std::vector<double> live_max_;
+  std::vector<float> live_max_;  // the largest bound of each leaf's live boxes
   std::vector<char> dirty_;
   std::vector<std::size_t> dirty_list_, walk_;
   // In blocks that never move: a doubling vector held the old and the new
