@@ -191,10 +191,11 @@ const Method& best_candidate_method() {
               {2, true, 0.02, 0.70, 0.77},
               {3, false, 0.1, 0.76, 0.83},
               {3, true, 0.1, 0.72, 0.78}},
-      // Measured 30.7 in 2D at 10^6, 151 in 3D at 3 10^4 (16 leaves a
-      // sample), under 1 from 4D (the literal method holds only the set).
-      .memory_ratio = 34,
-      .memory_ratio_from_dim = {{3, 180}, {4, 2}},
+      // Measured 17.4 in 2D at 10^6 and 16.3 at 10^5, 14.8 in 1D at 10^5,
+      // 67 in 3D at 10^4 and 49 at 3 10^4 (16 leaves a sample), under 1
+      // from 4D (the literal method holds only the set).
+      .memory_ratio = 22,
+      .memory_ratio_from_dim = {{3, 90}, {4, 2}},
       .params = {{"m", kBestCandidateDefaultM, 1, 1000, true, "candidates per sample already placed"}},
       .run =
           [](const GenerateRequest& r) {
