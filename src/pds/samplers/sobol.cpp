@@ -32,6 +32,8 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <mutex>
+#include <optional>
 #include <vector>
 
 #include "pds/detail/instantiate.h"
@@ -65,9 +67,22 @@ class BitReader {
   std::size_t bit_ = 0;
 };
 
-/// Direction numbers of every axis, v[axis][k], decoded once.
-const std::vector<std::array<std::uint32_t, 32>>& directions() {
-  static const std::vector<std::array<std::uint32_t, 32>> table = [] {
+/// Direction numbers of the first `axes` axes, v[axis][k]: decoded from the
+/// table's bit stream (read in order) as far as any call has asked, once.
+/// Not the whole table at once: that is 2.7 MB, which a call in a few
+/// dimensions never needs (it was most of a 2D run's memory at 10^5 points).
+/// The returned block holds at least `axes` rows and never moves (its room
+/// is reserved for every axis; pages not written are not resident).
+const std::array<std::uint32_t, 32>* directions(int axes) {
+  struct Decoded {
+    std::mutex mutex;
+    std::vector<std::array<std::uint32_t, 32>> v;
+    std::optional<BitReader> in;
+  };
+  static Decoded decoded;
+  const std::lock_guard<std::mutex> lock(decoded.mutex);
+  auto& v = decoded.v;
+  if (!decoded.in) {
     const unsigned char* data = detail::kSobolJoeKuoData;
     const std::size_t size = detail::kSobolJoeKuoDataSize;
     std::uint32_t rows = 0;
@@ -75,26 +90,28 @@ const std::vector<std::array<std::uint32_t, 32>>& directions() {
     for (int b = 0; b < 4; ++b) rows |= static_cast<std::uint32_t>(data[4 + b]) << (8 * b);
     if (rows + 1 != static_cast<std::uint32_t>(kSobolMaxDim))
       throw Failure("sobol: the embedded table has " + std::to_string(rows) + " rows, expected " +
-                  std::to_string(kSobolMaxDim - 1));
-    std::vector<std::array<std::uint32_t, 32>> v(kSobolMaxDim);
+                    std::to_string(kSobolMaxDim - 1));
+    v.reserve(kSobolMaxDim);
+    v.emplace_back();
     for (int k = 0; k < 32; ++k) v[0][k] = std::uint32_t{1} << (31 - k);  // axis 0: van der Corput
-    BitReader in(data + 8, size - 8);
-    for (int axis = 1; axis < kSobolMaxDim; ++axis) {
-      const int s = static_cast<int>(in.take(5));
-      if (s < 1 || s > 31) throw Failure("sobol: the embedded direction numbers are corrupt");
-      const std::uint32_t a = in.take(s - 1);  // the coefficients of x^(s-1) ... x^1, highest first
-      auto& d = v[axis];
-      for (int k = 0; k < s; ++k) d[k] = (2 * in.take(k) + 1) << (31 - k);  // m_(k+1), odd, below 2^(k+1)
-      // Bratley & Fox's recurrence on left-aligned direction numbers.
-      for (int k = s; k < 32; ++k) {
-        d[k] = d[k - s] ^ (d[k - s] >> s);
-        for (int l = 1; l < s; ++l)
-          if ((a >> (s - 1 - l)) & 1) d[k] ^= d[k - l];
-      }
+    decoded.in.emplace(data + 8, size - 8);
+  }
+  BitReader& in = *decoded.in;
+  while (static_cast<int>(v.size()) < axes) {
+    const int s = static_cast<int>(in.take(5));
+    if (s < 1 || s > 31) throw Failure("sobol: the embedded direction numbers are corrupt");
+    const std::uint32_t a = in.take(s - 1);  // the coefficients of x^(s-1) ... x^1, highest first
+    std::array<std::uint32_t, 32> d{};
+    for (int k = 0; k < s; ++k) d[k] = (2 * in.take(k) + 1) << (31 - k);  // m_(k+1), odd, below 2^(k+1)
+    // Bratley & Fox's recurrence on left-aligned direction numbers.
+    for (int k = s; k < 32; ++k) {
+      d[k] = d[k - s] ^ (d[k - s] >> s);
+      for (int l = 1; l < s; ++l)
+        if ((a >> (s - 1 - l)) & 1) d[k] ^= d[k - l];
     }
-    return v;
-  }();
-  return table;
+    v.push_back(d);
+  }
+  return v.data();
 }
 
 }  // namespace
@@ -103,7 +120,7 @@ std::array<std::uint32_t, 32> sobol_directions(int axis) {
   if (axis < 0 || axis >= kSobolMaxDim)
     throw InvalidArgument("sobol: axis " + std::to_string(axis) + " is beyond the " + std::to_string(kSobolMaxDim) +
                           " embedded axes");
-  return directions()[static_cast<std::size_t>(axis)];
+  return directions(axis + 1)[axis];
 }
 
 namespace {
@@ -120,7 +137,7 @@ class SobolWalk {
       throw InvalidArgument("sobol: dimension " + std::to_string(dim) + " is not supported (supported: 1 to " +
                             std::to_string(kSobolMaxDim) + ", Joe & Kuo's direction numbers)");
     require_index_range("sobol", params.first, params.count);
-    const auto& v = directions();
+    const auto* v = directions(dim);
     // Step k's direction numbers of every axis side by side: vt[k * dim + a].
     vt_.resize(32 * n_);
     for (std::size_t a = 0; a < n_; ++a)
