@@ -80,8 +80,13 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "points.npy")
         base, _ = peak_rss_mb([args.pds, "generate", "random", "--count", "1", "-o", out])
-        radius = 0.75 * densest_spacing(args.count, args.dim)
-        print(f"process alone: {base:.1f} MB; {args.dim}D, count {args.count}, radius-only methods at r = {radius:.6g}")
+        # Past 8 dimensions no method takes a radius (and no packing density is known).
+        if args.dim in PACKING_DENSITY:
+            radius = 0.75 * densest_spacing(args.count, args.dim)
+            sizing = f"radius-only methods at r = {radius:.6g}"
+        else:
+            radius, sizing = 1.0, "no method takes a radius"
+        print(f"process alone: {base:.1f} MB; {args.dim}D, count {args.count}, {sizing}")
         print("| method | points | output | peak RSS | growth | peak / output | growth / output | growth / estimate | time |")
         print("|---|---|---|---|---|---|---|---|---|")
         for entry in methods:

@@ -271,7 +271,7 @@ double peak_memory_estimate(const Method& method, const GenerateRequest& request
     if (param != method.params.end() && given != request.params.end() && given->second > param->default_value)
       ratio *= given->second / param->default_value;
   }
-  return points * request.dim * static_cast<double>(sizeof(double)) * ratio;
+  return points * request.dim * static_cast<double>(sizeof(double)) * ratio + request.dim * method.memory_per_axis;
 }
 
 PointCloud generate(const std::string& method, const GenerateRequest& request) {

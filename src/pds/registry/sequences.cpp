@@ -54,6 +54,9 @@ Method sequence_method(std::string name, std::string summary, std::string citati
                 .deterministic = true,
                 .dims = dims,
                 .memory_ratio = 1.5,  // sobol 1.1-1.2 in 1D to 100D (scripts/peak_memory.py --dim)
+                // Measured 280 bytes an axis (halton, hammersley; 10 points in
+                // 10^4 dimensions) and 330 (sobol, scrambled; 21,201).
+                .memory_per_axis = 400,
                 .params = std::move(params),
                 .run = run};
 }
@@ -105,6 +108,7 @@ const Method& hammersley_method() {
       .deterministic = true,
       .dims = {1, kHammersleyMaxDim},
       .memory_ratio = 1.5,
+      .memory_per_axis = 400,  // as the sequences above
       .params = {scramble_param(),
                  first_param(),
                  {.name = "size",
