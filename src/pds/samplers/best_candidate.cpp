@@ -308,7 +308,20 @@ class GapBoxes {
     for (std::size_t k = 0; k < near.size(); ++k)
       for (int i = 0; i < D; ++i) local_[k][i] = middle[i] + domain_.delta(middle[i], near[k][i], i);
     first_[leaf] = static_cast<std::uint32_t>(arena_.size());
-    double idle = -kInf;
+    // Bounds are compared with theta in squares: sqrt(d2) (1 +- 1e-12) <=
+    // theta holds when d2 < theta^2 (1 - 1e-9) and fails when d2 > theta^2
+    // (1 + 1e-9); only in between (rarely) is the root taken to decide. So
+    // every decision is the root's, and only live boxes need their root.
+    // (Where theta's square is not a normal number, always the root.)
+    const double theta2 = theta * theta;
+    const bool squares = std::isnormal(theta2);
+    const double surely_below = theta2 * (1.0 - 1e-9), surely_above = theta2 * (1.0 + 1e-9);
+    const auto at_most_theta = [&](double d2, double factor) {
+      if (squares && d2 < surely_below) return true;
+      if (squares && d2 > surely_above) return false;
+      return std::sqrt(d2) * factor <= theta;
+    };
+    double idle2 = -1.0;  // the largest squared upper bound of an idle box
     stack_.clear();
     stack_.push_back({leaf_lo(leaf), 0});
     while (!stack_.empty()) {
@@ -329,9 +342,8 @@ class GapBoxes {
         }
         upper2 = std::min(upper2, far2);
       }
-      const double upper = std::sqrt(upper2) * (1.0 + 1e-12);
-      if (upper <= theta) {
-        idle = std::max(idle, upper);
+      if (at_most_theta(upper2, 1.0 + 1e-12)) {
+        idle2 = std::max(idle2, upper2);
         continue;
       }
       double lower2 = kInf;
@@ -343,8 +355,7 @@ class GapBoxes {
         }
         lower2 = std::min(lower2, near2);
       }
-      const double lower = std::sqrt(lower2) * (1.0 - 1e-12);
-      if (lower <= theta && level < kMaxLevel && volume_ * scale_volume(level) > split_above) {
+      if (at_most_theta(lower2, 1.0 - 1e-12) && level < kMaxLevel && volume_ * scale_volume(level) > split_above) {
         for (int child = 0; child < (1 << D); ++child) {
           Point<D> c = lo;
           for (int i = 0; i < D; ++i)
@@ -353,6 +364,7 @@ class GapBoxes {
         }
         continue;
       }
+      const double upper = std::sqrt(upper2) * (1.0 + 1e-12);
       double centre2 = kInf;
       std::size_t witness = 0;
       for (std::size_t k = 0; k < local_.size(); ++k) {
@@ -370,7 +382,9 @@ class GapBoxes {
       live_max_all_ = std::max(live_max_all_, upper);
     }
     live_boxes_ += count_[leaf];
-    set(leaf, idle);
+    // The largest idle bound: the root of the largest square, as the root
+    // and the factor are monotone.
+    set(leaf, idle2 < 0.0 ? -kInf : std::sqrt(idle2) * (1.0 + 1e-12));
   }
 
   /// Every sample within this distance of the leaf's centre must be passed
