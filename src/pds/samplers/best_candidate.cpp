@@ -473,6 +473,8 @@ class GapBoxes {
   // bytes of a double, and still an upper bound.
   float stored(double value) const {
     const double x = value * inv_unit_;
+    // (Bounds stay within some 10^9 units; a larger one would not convert.)
+    if (x > std::numeric_limits<float>::max()) return std::numeric_limits<float>::infinity();
     const float f = static_cast<float>(x);
     return f < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
   }

@@ -78,9 +78,11 @@ const std::array<std::uint32_t, 32>* directions(int axes) {
     std::mutex mutex;
     std::vector<std::array<std::uint32_t, 32>> v;
     std::optional<BitReader> in;
+    bool corrupt = false;  // a decode failed: the stream's place is lost, every call fails
   };
   static Decoded decoded;
   const std::lock_guard<std::mutex> lock(decoded.mutex);
+  if (decoded.corrupt) throw Failure("sobol: the embedded direction numbers are corrupt");
   auto& v = decoded.v;
   if (!decoded.in) {
     const unsigned char* data = detail::kSobolJoeKuoData;
@@ -97,19 +99,24 @@ const std::array<std::uint32_t, 32>* directions(int axes) {
     decoded.in.emplace(data + 8, size - 8);
   }
   BitReader& in = *decoded.in;
-  while (static_cast<int>(v.size()) < axes) {
-    const int s = static_cast<int>(in.take(5));
-    if (s < 1 || s > 31) throw Failure("sobol: the embedded direction numbers are corrupt");
-    const std::uint32_t a = in.take(s - 1);  // the coefficients of x^(s-1) ... x^1, highest first
-    std::array<std::uint32_t, 32> d{};
-    for (int k = 0; k < s; ++k) d[k] = (2 * in.take(k) + 1) << (31 - k);  // m_(k+1), odd, below 2^(k+1)
-    // Bratley & Fox's recurrence on left-aligned direction numbers.
-    for (int k = s; k < 32; ++k) {
-      d[k] = d[k - s] ^ (d[k - s] >> s);
-      for (int l = 1; l < s; ++l)
-        if ((a >> (s - 1 - l)) & 1) d[k] ^= d[k - l];
+  try {
+    while (static_cast<int>(v.size()) < axes) {
+      const int s = static_cast<int>(in.take(5));
+      if (s < 1 || s > 31) throw Failure("sobol: the embedded direction numbers are corrupt");
+      const std::uint32_t a = in.take(s - 1);  // the coefficients of x^(s-1) ... x^1, highest first
+      std::array<std::uint32_t, 32> d{};
+      for (int k = 0; k < s; ++k) d[k] = (2 * in.take(k) + 1) << (31 - k);  // m_(k+1), odd, below 2^(k+1)
+      // Bratley & Fox's recurrence on left-aligned direction numbers.
+      for (int k = s; k < 32; ++k) {
+        d[k] = d[k - s] ^ (d[k - s] >> s);
+        for (int l = 1; l < s; ++l)
+          if ((a >> (s - 1 - l)) & 1) d[k] ^= d[k - l];
+      }
+      v.push_back(d);
     }
-    v.push_back(d);
+  } catch (...) {
+    decoded.corrupt = true;
+    throw;
   }
   return v.data();
 }
