@@ -50,10 +50,11 @@
 // Complexity and limits: per round, about a hundred live-box candidates (most
 // rejected by a stored nearby sample without a query) and some twenty leaf
 // tightenings in 2D (more in 3D), both growing slowly with i; in all about
-// N^1.2 (docs/best-candidate.md: 10^5 in 2D in 8.5 s, 10^6 in 147 s, 10^5 in
-// 3D in 58 s). Memory: the leaves (4 a sample in 1D and 2D, 16 in 3D, for up to
-// twice the samples) of about 40 bytes, plus the live boxes (well under one
-// per sample, ~60-90 bytes).
+// N^1.2 (docs/benchmarks.md: 10^5 in 2D in 5.0 s, 10^6 in 130 s). Memory: the
+// leaves (4 a sample in 1D and 2D, 16 in 3D, for up to twice the samples) of
+// about 12 bytes plus their 4-byte bound tree, the live boxes (about one a
+// sample, 48 bytes) and the nearest-sample grid: 17 times the output at 10^6
+// in 2D (docs/reliability.md).
 
 #include "pds/samplers/best_candidate.h"
 
