@@ -49,6 +49,26 @@ BENCHMARK(BM_Elimination<2, true>)->ArgsProduct({{10'000, 100'000, 1'000'000}, {
 BENCHMARK(BM_Elimination<2, false>)->Args({1'000'000, 0})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Elimination<3, true>)->Args({100'000, 0})->Unit(benchmark::kMillisecond);
 
+// elimination() as `pds generate elimination` runs it: 5N white-noise
+// candidates drawn inside the timing, the progressive order, then min_rho's
+// moves of the closest pairs (second argument: min_rho x 100; 0 is the
+// paper's set, a subset of the candidates).
+template <int D>
+void BM_EliminationMinRho(benchmark::State& state) {
+  const auto domain = pds::Domain<D>::unit(true);
+  const auto n = static_cast<std::uint64_t>(state.range(0));
+  const double min_rho = static_cast<double>(state.range(1)) / 100.0;
+  pds::PointSet<D> out;
+  for (auto _ : state) {
+    out = pds::elimination<D>({.count = n, .min_rho = min_rho}, domain, 1);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["rho"] = rho_of(out, domain);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+}
+BENCHMARK(BM_EliminationMinRho<2>)->ArgsProduct({{100'000, 1'000'000}, {0, 72}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EliminationMinRho<3>)->ArgsProduct({{100'000}, {0, 72}})->Unit(benchmark::kMillisecond);
+
 #ifdef PDS_BENCH_CYCODEBASE
 // cySampleElim with its defaults (alpha 8, beta 0.65, gamma 1.5, weight
 // limiting on), tiling on (the torus), on the same candidates.

@@ -121,6 +121,18 @@ class Grid {
     return index;
   }
 
+  /// Moves stored point `index` to p (which must lie in the domain). Walks
+  /// its old cell's list to unlink it, so cells should hold few points.
+  void move(std::int32_t index, const Point<D>& p) {
+    const auto i = static_cast<std::size_t>(index);
+    std::int32_t* link = &head_[cell_of(points_[i])];
+    while (*link != index) link = &next_[static_cast<std::size_t>(*link)];
+    *link = next_[i];
+    const std::size_t c = cell_of(p);
+    points_[i] = p;
+    next_[i] = head_[c];
+    head_[c] = index;
+  }
   /// Calls f(index, distance2) for every stored point q with
   /// distance(p, q) <= r; f returns false to stop early. Returns false if
   /// stopped.

@@ -53,6 +53,38 @@ TEST(Grid, MatchesBruteForceOnBoxAndTorus2D) {
   check_against_brute_force<2>(Domain<2>::torus({-2, 1}, {1, 2.5}), 0.13, 3);
 }
 
+// Moved points are found at their new place only, with their index kept,
+// whether they stay in their cell or leave it, first or last in its list.
+TEST(Grid, MovedPointsAreFoundWhereTheyWent) {
+  const auto domain = Domain<2>::unit(true);
+  PointSet<2> points = white_noise<2>({300}, domain, 7);
+  Grid<2> grid(domain, 0.2);  // several points a cell
+  for (const auto& p : points) grid.insert(p);
+  Rng rng(8);
+  for (int m = 0; m < 500; ++m) {
+    const auto i = static_cast<std::int32_t>(rng.below(points.size()));
+    Point<2> to = points[static_cast<std::size_t>(i)];
+    to[0] += m % 2 ? 1e-3 : 0.3;  // the same cell, or another
+    to = domain.wrap(to);
+    grid.move(i, to);
+    points[static_cast<std::size_t>(i)] = to;
+  }
+  ASSERT_EQ(grid.size(), points.size());
+  EXPECT_EQ(grid.points(), points);
+  for (int q = 0; q < 100; ++q) {
+    const Point<2> p = uniform_point(rng, domain);
+    std::vector<int> found, expected;
+    grid.for_each_within(p, 0.15, [&](std::int32_t i, double) {
+      found.push_back(i);
+      return true;
+    });
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (domain.distance2(p, points[i]) <= 0.15 * 0.15) expected.push_back(static_cast<int>(i));
+    std::sort(found.begin(), found.end());
+    EXPECT_EQ(found, expected) << "query " << p;
+  }
+}
+
 TEST(Grid, MatchesBruteForceOnBoxAndTorus3D) {
   check_against_brute_force<3>(Domain<3>::unit(false), 0.15, 4);
   check_against_brute_force<3>(Domain<3>::unit(true), 0.15, 5);

@@ -238,7 +238,10 @@ const Method& elimination_method() {
                  {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},
                  {"beta", 0.65, 0, 0.99, false, "weight limit d_min = d_max (1 - (N/M)^gamma) beta; 0: none"},
-                 {"gamma", 1.5, 0.1, 10, false, "weight limit exponent"}},
+                 {"gamma", 1.5, 0.1, 10, false, "weight limit exponent"},
+                 {"min_rho", 0.72, 0, 0.9, false,
+                  "then move points of pairs closer than this relative radius apart; 0: the paper's set, a subset "
+                  "of the candidates (not applied with a density, mask or mesh)"}},
       .run =
           [](const GenerateRequest& r) {
             return run_typed<1, 3>(r, [&](const auto& domain) {
@@ -250,6 +253,7 @@ const Method& elimination_method() {
               params.weights.alpha = r.param("alpha", 8);
               params.weights.beta = r.param("beta", 0.65);
               params.weights.gamma = r.param("gamma", 1.5);
+              params.min_rho = r.param("min_rho", 0.72);
               params.progress = r.progress;
               // The candidates, not the output, are what takes the memory.
               require_point_budget(std::ceil(params.candidates * static_cast<double>(params.count)), r.dim,

@@ -170,7 +170,8 @@ TEST(Elimination, DrawnCandidatesGiveWhatTheCallersCandidatesGive) {
         Rng rng(21);
         PointSet<2> candidates(5 * n);
         for (Point<2>& p : candidates) p = uniform_point(rng, domain);
-        const PointSet<2> drawn = elimination<2>({.count = n, .progressive = progressive}, domain, 21);
+        const PointSet<2> drawn =
+            elimination<2>({.count = n, .progressive = progressive, .min_rho = 0}, domain, 21);
         const double d_max = 2.0 * max_packing_radius(domain.volume(), n, 2);
         const std::vector<std::uint32_t> kept =
             detail::eliminate_indices<2>(candidates, {}, n, domain, d_max, {}, progressive, 2);
@@ -200,16 +201,69 @@ TEST(Elimination, ProgressiveOrderIsAPermutationOfTheKeptSet) {
 // (50%); 3D from 5N 0.680-0.682 (docs/elimination.md).
 TEST(Elimination, RelativeRadiusOfTheSetAndOfItsPrefixes) {
   const auto domain = Domain<2>::unit(true);
-  const PointSet<2> points = elimination<2>({.count = 4096}, domain, 1);
+  const PointSet<2> points = elimination<2>({.count = 4096, .min_rho = 0}, domain, 1);
   EXPECT_GE(rho_of(points, points.size(), domain), 0.68);
   for (double fraction : {0.1, 0.5}) {
     const auto prefix = static_cast<std::size_t>(fraction * points.size());
     EXPECT_GE(rho_of(points, prefix, domain), 0.58) << "first " << prefix << " points";
   }
-  const PointSet<2> denser = elimination<2>({.count = 4096, .candidates = 10}, domain, 1);
+  const PointSet<2> denser = elimination<2>({.count = 4096, .candidates = 10, .min_rho = 0}, domain, 1);
   EXPECT_GE(rho_of(denser, denser.size(), domain), 0.72);
   const auto cube = Domain<3>::unit(true);
-  EXPECT_GE(rho_of(elimination<3>({.count = 4096}, cube, 1), 4096, cube), 0.66);
+  EXPECT_GE(rho_of(elimination<3>({.count = 4096, .min_rho = 0}, cube, 1), 4096, cube), 0.66);
+}
+
+// The minimum distance of every prefix: the first k points' closest pair, k
+// = 1..n (infinity for one point), all pairs.
+template <int D>
+std::vector<double> prefix_minima(const PointSet<D>& points, const Domain<D>& domain) {
+  std::vector<double> mu(points.size() + 1, std::numeric_limits<double>::infinity());
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    double nearest2 = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < k; ++j) nearest2 = std::min(nearest2, domain.distance2(points[k], points[j]));
+    mu[k + 1] = std::min(mu[k], std::sqrt(nearest2));
+  }
+  return mu;
+}
+
+// min_rho moves the points of the closest pairs: the set reaches the asked
+// relative radius, no prefix of the progressive order gets a closer pair than
+// the paper's order had, and only a few points of the second half move.
+template <int D>
+void check_spread(const Domain<D>& domain, std::size_t n, std::uint64_t seed, double min_rho, bool progressive) {
+  const PointSet<D> paper = elimination<D>({.count = n, .progressive = progressive, .min_rho = 0}, domain, seed);
+  const PointSet<D> spread =
+      elimination<D>({.count = n, .progressive = progressive, .min_rho = min_rho}, domain, seed);
+  const std::string where = std::to_string(D) + "D, " + (domain.periodic ? "torus" : "box") + ", seed " +
+                            std::to_string(seed) + ", progressive " + std::to_string(progressive);
+  ASSERT_EQ(spread.size(), n) << where;
+  for (const auto& p : spread) ASSERT_TRUE(domain.contains(p)) << p << ", " << where;
+  EXPECT_GE(rho_of(spread, n, domain), min_rho) << where;
+  EXPECT_LT(rho_of(paper, n, domain), min_rho) << where << ": nothing to move";
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (spread[i] != paper[i]) {
+      ++moved;
+      if (progressive) {
+        EXPECT_GE(i, n / 2) << where;
+      }
+    }
+  EXPECT_GT(moved, 0u) << where;
+  EXPECT_LT(moved, n / 8) << where;
+  if (!progressive) return;
+  const std::vector<double> before = prefix_minima(paper, domain), after = prefix_minima(spread, domain);
+  for (std::size_t k = 2; k <= n; ++k) ASSERT_GE(after[k], before[k]) << "first " << k << " points, " << where;
+}
+
+TEST(Elimination, MinRhoMovesTheClosestPairsApartAndKeepsEveryPrefix) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    check_spread<2>(Domain<2>::unit(true), 4096, seed, 0.72, true);
+    check_spread<2>(Domain<2>::box({-3, 1}, {-1, 1.5}), 3000, seed, 0.72, true);
+  }
+  check_spread<2>(Domain<2>::unit(true), 4096, 4, 0.74, true);
+  check_spread<2>(Domain<2>::unit(true), 2000, 5, 0.72, false);
+  check_spread<3>(Domain<3>::unit(true), 3000, 1, 0.72, true);
+  check_spread<3>(Domain<3>::box({0, 0, 0}, {1, 2, 0.5}), 2000, 2, 0.72, true);
 }
 
 // On a torus the spacing holds across the seam; the same elimination in the
@@ -231,6 +285,9 @@ TEST(Elimination, InvalidInput) {
   EXPECT_THROW(elimination<2>({.count = 10, .candidates = 0.5}, domain, 1), InvalidArgument);
   EXPECT_THROW(elimination<2>({.count = 10, .candidates = std::nan("")}, domain, 1), InvalidArgument);
   EXPECT_THROW(elimination<2>({.count = 10, .weights = {.beta = 1.0}}, domain, 1), InvalidArgument);
+  EXPECT_THROW(elimination<2>({.count = 10, .min_rho = -0.1}, domain, 1), InvalidArgument);
+  EXPECT_THROW(elimination<2>({.count = 10, .min_rho = 0.95}, domain, 1), InvalidArgument);
+  EXPECT_THROW(elimination<2>({.count = 10, .min_rho = std::nan("")}, domain, 1), InvalidArgument);
   const PointSet<2> three = {{0.1, 0.1}, {0.5, 0.5}, {0.9, 0.2}};
   EXPECT_THROW(eliminate(three, 4, domain), InvalidArgument);
   EXPECT_THROW(eliminate(PointSet<2>{{0.1, 1.0}}, 1, domain), InvalidArgument);
