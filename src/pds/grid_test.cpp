@@ -57,7 +57,7 @@ TEST(Grid, MatchesBruteForceOnBoxAndTorus2D) {
 // whether they stay in their cell or leave it, first or last in its list.
 TEST(Grid, MovedPointsAreFoundWhereTheyWent) {
   const auto domain = Domain<2>::unit(true);
-  PointSet<2> points = white_noise<2>({300}, domain, 7);
+  PointSet<2> points = white_noise<2>({.count = 300}, domain, 7);
   Grid<2> grid(domain, 0.2);  // several points a cell
   for (const auto& p : points) grid.insert(p);
   Rng rng(8);

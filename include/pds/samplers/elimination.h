@@ -43,10 +43,12 @@ struct EliminationParams {
   /// relative radius (min_rho x 2 r_max, analysis/relative_radius.h) to the
   /// best of trial places near them: about 4% of the points in 2D at 0.72,
   /// which lifts the minimum distance from the paper's ~0.69 to 0.72. A move
-  /// is kept only if the moved point ends at least that far from every other
-  /// and no prefix of the progressive order gets a closer pair than it had
-  /// (only points of the second half move). 0 keeps the paper's output, a
-  /// subset of the candidates. In [0, 0.9].
+  /// never gives a prefix of the progressive order a closer pair than it had
+  /// (only points of the second half move); it takes a point min_rho from
+  /// every other, or where none is found, to a better place than its own.
+  /// Above ~0.74 there is no more room (0.74 and 0.8 give ~0.73 at 10^5
+  /// points, 0.8 at 8 times the cost). 0 keeps the paper's output, a subset
+  /// of the candidates. In [0, 0.8].
   double min_rho = 0.72;
   /// Optional progress (candidates removed, over every round) and
   /// cancellation (pds/progress.h).
@@ -60,9 +62,9 @@ struct EliminationParams {
 /// candidates when min_rho is 0; same seed, same points (no thread, and the
 /// heap breaks ties by index). No minimum distance is promised: the weights
 /// push samples apart but nothing bounds the closest pair, and a point that
-/// finds no place min_rho from the others stays (none did in the runs of
-/// docs/elimination.md). Measured relative radius ~0.69 from 5N candidates
-/// without the moves, 0.72 with them, ~0.74 from 10N, in 2D. In a box, samples near the
+/// finds no place min_rho from the others ends nearer (none did at 0.72 in
+/// the runs of docs/elimination.md). Measured relative radius ~0.69 from 5N
+/// candidates without the moves, 0.72 with them, ~0.74 from 10N, in 2D. In a box, samples near the
 /// faces have fewer neighbours and lighter weights, so the faces keep
 /// slightly more samples (as in the paper without tiling); on a torus every
 /// distance is to the nearest periodic image, each candidate counted once.

@@ -239,7 +239,7 @@ const Method& elimination_method() {
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},
                  {"beta", 0.65, 0, 0.99, false, "weight limit d_min = d_max (1 - (N/M)^gamma) beta; 0: none"},
                  {"gamma", 1.5, 0.1, 10, false, "weight limit exponent"},
-                 {"min_rho", 0.72, 0, 0.9, false,
+                 {"min_rho", 0.72, 0, 0.8, false,
                   "then move points of pairs closer than this relative radius apart; 0: the paper's set, a subset "
                   "of the candidates (not applied with a density, mask or mesh)"}},
       .run =

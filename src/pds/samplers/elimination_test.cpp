@@ -228,9 +228,12 @@ std::vector<double> prefix_minima(const PointSet<D>& points, const Domain<D>& do
 
 // min_rho moves the points of the closest pairs: the set reaches the asked
 // relative radius, no prefix of the progressive order gets a closer pair than
-// the paper's order had, and only a few points of the second half move.
+// the paper's order had, and only a few points of the second half move. Asked
+// for more than there is room for (`room`: the relative radius reached), the
+// closest pair still moves apart, under the same rule for the prefixes.
 template <int D>
-void check_spread(const Domain<D>& domain, std::size_t n, std::uint64_t seed, double min_rho, bool progressive) {
+void check_spread(const Domain<D>& domain, std::size_t n, std::uint64_t seed, double min_rho, bool progressive,
+                  double room = 1.0) {
   const PointSet<D> paper = elimination<D>({.count = n, .progressive = progressive, .min_rho = 0}, domain, seed);
   const PointSet<D> spread =
       elimination<D>({.count = n, .progressive = progressive, .min_rho = min_rho}, domain, seed);
@@ -238,7 +241,8 @@ void check_spread(const Domain<D>& domain, std::size_t n, std::uint64_t seed, do
                             std::to_string(seed) + ", progressive " + std::to_string(progressive);
   ASSERT_EQ(spread.size(), n) << where;
   for (const auto& p : spread) ASSERT_TRUE(domain.contains(p)) << p << ", " << where;
-  EXPECT_GE(rho_of(spread, n, domain), min_rho) << where;
+  EXPECT_GE(rho_of(spread, n, domain), std::min(min_rho, room)) << where;
+  EXPECT_LT(rho_of(spread, n, domain), std::min(min_rho, room) + 0.02) << where;
   EXPECT_LT(rho_of(paper, n, domain), min_rho) << where << ": nothing to move";
   std::size_t moved = 0;
   for (std::size_t i = 0; i < n; ++i)
@@ -249,7 +253,9 @@ void check_spread(const Domain<D>& domain, std::size_t n, std::uint64_t seed, do
       }
     }
   EXPECT_GT(moved, 0u) << where;
-  EXPECT_LT(moved, n / 8) << where;
+  if (min_rho <= room) {
+    EXPECT_LT(moved, n / 8) << where;
+  }
   if (!progressive) return;
   const std::vector<double> before = prefix_minima(paper, domain), after = prefix_minima(spread, domain);
   for (std::size_t k = 2; k <= n; ++k) ASSERT_GE(after[k], before[k]) << "first " << k << " points, " << where;
@@ -264,6 +270,8 @@ TEST(Elimination, MinRhoMovesTheClosestPairsApartAndKeepsEveryPrefix) {
   check_spread<2>(Domain<2>::unit(true), 2000, 5, 0.72, false);
   check_spread<3>(Domain<3>::unit(true), 3000, 1, 0.72, true);
   check_spread<3>(Domain<3>::box({0, 0, 0}, {1, 2, 0.5}), 2000, 2, 0.72, true);
+  // 0.80 is more than 4096 points on a torus have room for: they reach 0.740-0.743.
+  check_spread<2>(Domain<2>::unit(true), 4096, 1, 0.80, true, 0.735);
 }
 
 // On a torus the spacing holds across the seam; the same elimination in the
@@ -286,7 +294,7 @@ TEST(Elimination, InvalidInput) {
   EXPECT_THROW(elimination<2>({.count = 10, .candidates = std::nan("")}, domain, 1), InvalidArgument);
   EXPECT_THROW(elimination<2>({.count = 10, .weights = {.beta = 1.0}}, domain, 1), InvalidArgument);
   EXPECT_THROW(elimination<2>({.count = 10, .min_rho = -0.1}, domain, 1), InvalidArgument);
-  EXPECT_THROW(elimination<2>({.count = 10, .min_rho = 0.95}, domain, 1), InvalidArgument);
+  EXPECT_THROW(elimination<2>({.count = 10, .min_rho = 0.85}, domain, 1), InvalidArgument);
   EXPECT_THROW(elimination<2>({.count = 10, .min_rho = std::nan("")}, domain, 1), InvalidArgument);
   const PointSet<2> three = {{0.1, 0.1}, {0.5, 0.5}, {0.9, 0.2}};
   EXPECT_THROW(eliminate(three, 4, domain), InvalidArgument);
