@@ -50,6 +50,7 @@ echo "not a png" >"$tmp/bad.png"
 expect_exit 2 "as PNG" -- generate bridson --density "$tmp/bad.png" --radius-range 0.01,0.02
 expect_exit 2 "as PNG" -- generate bridson --mask "$tmp/missing.png" --radius 0.1
 expect_exit 2 "--density needs --radius-range" -- generate bridson --density "$in/gradient.png"
+expect_exit 2 "min_rho is not taken with a density or a mask" -- generate elimination --density "$in/gradient.png" --radius-range 0.01,0.04 --param min_rho=0.7
 expect_exit 2 "--radius-range needs --density" -- generate bridson --radius-range 0.01,0.02
 expect_exit 2 "rmin <= rmax" -- generate bridson --density "$in/gradient.png" --radius-range 0.05,0.01
 expect_exit 2 "rmin must be positive" -- generate bridson --density "$in/gradient.png" --radius-range 0,0.01

@@ -52,6 +52,9 @@ void generate_on_mesh(const CLI::App& command, const std::string& method, const 
                             std::to_string(density.dim));
     sp.vertex_density = density.coords;
   }
+  // On a surface every sample stays one of the candidates.
+  if (params.count("min_rho"))
+    throw InvalidArgument("--mesh does not take min_rho: on a surface each sample is one of the candidates");
   sp.count = by_count ? generation.count : surface_count_for_radius(surface_area(mesh), generation.radius);
   sp.candidates = param("candidates", 5);
   // Off by default on a surface: it doubles the time, and a mesh's samples

@@ -241,7 +241,7 @@ const Method& elimination_method() {
                  {"gamma", 1.5, 0.1, 10, false, "weight limit exponent"},
                  {"min_rho", 0.72, 0, 0.8, false,
                   "then move points of pairs closer than this relative radius apart; 0: the paper's set, a subset "
-                  "of the candidates (not applied with a density, mask or mesh)"}},
+                  "of the candidates; not taken with a density, mask or mesh"}},
       .run =
           [](const GenerateRequest& r) {
             return run_typed<1, 3>(r, [&](const auto& domain) {
@@ -258,7 +258,15 @@ const Method& elimination_method() {
               // The candidates, not the output, are what takes the memory.
               require_point_budget(std::ceil(params.candidates * static_cast<double>(params.count)), r.dim,
                                    std::numeric_limits<std::uint64_t>::max(), "elimination's candidates");
-              if (r.constraints.active()) return elimination(params, r.constraints.typed(domain), domain, r.seed);
+              if (r.constraints.active()) {
+                // The default applies without constraints only; asked for
+                // explicitly it is an error rather than silently dropped.
+                if (r.params.count("min_rho"))
+                  throw InvalidArgument(
+                      "elimination: min_rho is not taken with a density or a mask (each sample stays one of the "
+                      "candidates)");
+                return elimination(params, r.constraints.typed(domain), domain, r.seed);
+              }
               return elimination(params, domain, r.seed);
             });
           },

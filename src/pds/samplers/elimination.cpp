@@ -769,7 +769,7 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
   for (;;) {
     double cells = 1.0;
     for (int a = 0; a < D; ++a) cells *= std::max(1.0, std::ceil(domain.extent(a) / edge));
-    if (cells <= 8.0 * static_cast<double>(n) + 64.0) break;
+    if (cells <= std::min(8.0 * static_cast<double>(n) + 64.0, static_cast<double>(kMaxGridCells))) break;
     edge *= 2.0;
   }
   Grid<D> grid(domain, edge);
@@ -942,8 +942,8 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   for (Point<D>& p : candidates) p = uniform_point(rng, domain);
   PointSet<D> kept =
       eliminate(std::move(candidates), params.count, domain, params.weights, params.progressive, params.progress);
-  return spread_closest_pairs<D>(std::move(kept), domain, params.min_rho * 2.0 * max_packing_radius(domain.volume(), params.count, D),
-                                 params.progressive, seed);
+  const double spacing = params.min_rho * 2.0 * max_packing_radius(domain.volume(), params.count, D);
+  return spread_closest_pairs<D>(std::move(kept), domain, spacing, params.progressive, seed);
 }
 
 template <int D>

@@ -170,8 +170,7 @@ TEST(Elimination, DrawnCandidatesGiveWhatTheCallersCandidatesGive) {
         Rng rng(21);
         PointSet<2> candidates(5 * n);
         for (Point<2>& p : candidates) p = uniform_point(rng, domain);
-        const PointSet<2> drawn =
-            elimination<2>({.count = n, .progressive = progressive, .min_rho = 0}, domain, 21);
+        const PointSet<2> drawn = elimination<2>({.count = n, .progressive = progressive, .min_rho = 0}, domain, 21);
         const double d_max = 2.0 * max_packing_radius(domain.volume(), n, 2);
         const std::vector<std::uint32_t> kept =
             detail::eliminate_indices<2>(candidates, {}, n, domain, d_max, {}, progressive, 2);
@@ -235,8 +234,7 @@ template <int D>
 void check_spread(const Domain<D>& domain, std::size_t n, std::uint64_t seed, double min_rho, bool progressive,
                   double room = 1.0) {
   const PointSet<D> paper = elimination<D>({.count = n, .progressive = progressive, .min_rho = 0}, domain, seed);
-  const PointSet<D> spread =
-      elimination<D>({.count = n, .progressive = progressive, .min_rho = min_rho}, domain, seed);
+  const PointSet<D> spread = elimination<D>({.count = n, .progressive = progressive, .min_rho = min_rho}, domain, seed);
   const std::string where = std::to_string(D) + "D, " + (domain.periodic ? "torus" : "box") + ", seed " +
                             std::to_string(seed) + ", progressive " + std::to_string(progressive);
   ASSERT_EQ(spread.size(), n) << where;
