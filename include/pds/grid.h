@@ -178,8 +178,12 @@ class Grid {
     std::array<int, D> first, last;
     for (int i = 0; i < D; ++i) {
       const double x = p[i] - domain_.lo[i];
-      first[i] = static_cast<int>(std::floor((x - r) * inv_edge_[i]));
-      last[i] = static_cast<int>(std::floor((x + r) * inv_edge_[i]));
+      // Clamped before the cast: a radius of many cells along a thin axis
+      // would not fit an int, and a window past the box, or longer than a
+      // period of a torus, takes the whole axis anyway.
+      const double bound = static_cast<double>(hood_.cells(i)) + 1.0;
+      first[i] = static_cast<int>(std::clamp(std::floor((x - r) * inv_edge_[i]), -bound, 2.0 * bound));
+      last[i] = static_cast<int>(std::clamp(std::floor((x + r) * inv_edge_[i]), -bound, 2.0 * bound));
     }
     if constexpr (D >= 4) {
       return for_each_cell_pruned(p, r, first, last, f);

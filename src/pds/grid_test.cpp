@@ -17,7 +17,7 @@ namespace {
 template <int D>
 void check_against_brute_force(const Domain<D>& domain, double grid_radius, std::uint64_t seed,
                                bool conflicts = false) {
-  const PointSet<D> points = white_noise<D>({400}, domain, seed);
+  const PointSet<D> points = white_noise<D>({.count = 400}, domain, seed);
   Grid<D> grid = conflicts ? Grid<D>::for_conflicts(domain, grid_radius) : Grid<D>::for_radius(domain, grid_radius);
   for (const auto& p : points) grid.insert(p);
   ASSERT_EQ(grid.size(), points.size());
@@ -51,6 +51,29 @@ TEST(Grid, MatchesBruteForceOnBoxAndTorus2D) {
   check_against_brute_force<2>(Domain<2>::unit(false), 0.07, 1);
   check_against_brute_force<2>(Domain<2>::unit(true), 0.07, 2);
   check_against_brute_force<2>(Domain<2>::torus({-2, 1}, {1, 2.5}), 0.13, 3);
+}
+
+// A radius of far more cells than an int holds along a thin axis (it was
+// undefined behaviour in the cell arithmetic, found by the sanitizers): the
+// window takes the whole axis, in a box and on a torus.
+TEST(Grid, RadiusOfMoreCellsThanAnIntHolds) {
+  for (bool torus : {false, true}) {
+    const Domain<2> domain{{0, 0}, {1e-150, 1e150}, torus};
+    const PointSet<2> points = white_noise<2>({.count = 50}, domain, 9);
+    Grid<2> grid(domain, 1e145);  // one cell across, 10^5 along
+    for (const auto& p : points) grid.insert(p);
+    for (double r : {1e-100, 1.0, 1e145, 1e300}) {
+      std::vector<int> found, expected;
+      grid.for_each_within(points[0], r, [&](std::int32_t i, double) {
+        found.push_back(i);
+        return true;
+      });
+      for (std::size_t i = 0; i < points.size(); ++i)
+        if (domain.distance2(points[0], points[i]) <= r * r) expected.push_back(static_cast<int>(i));
+      std::sort(found.begin(), found.end());
+      EXPECT_EQ(found, expected) << "torus " << torus << " r " << r;
+    }
+  }
 }
 
 // Moved points are found at their new place only, with their index kept,
