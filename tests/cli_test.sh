@@ -53,6 +53,16 @@ expect_exit 2 "axis 0 has 1 for radius 0.3" -- generate dunbar-humphreys --radiu
 expect_exit 1 "the coordinates are too coarse for this radius" -- generate dunbar-humphreys --radius 0.2 --torus \
   --bounds 100000000000000,100000000000000,100000000000002,100000000000002
 expect_exit 2 "dimension 4 is not supported" -- generate jittered --count 10 --dim 4
+# ebeida and wei run to 8D through the registry: small sets, spaced by the
+# analysis, and ebeida's maximal; 9D is refused.
+b8=0,0,0,0,0,0,0,0,1,1,1,1,1,1,1,1
+for method in ebeida wei; do
+  expect_exit 0 "" -- generate $method --dim 8 --radius 1.1 --bounds $b8 --seed 2 -o "$tmp/${method}8.csv"
+  expect_exit 0 "" -- analyze "$tmp/${method}8.csv" --bounds $b8 --radius 1.1
+  grep -qF '"min_distance_holds": true' "$tmp/out" && ok || bad "$method 8D: a pair closer than the radius"
+  if [[ $method == ebeida ]]; then grep -qF '"maximal": true' "$tmp/out" && ok || bad "ebeida 8D: not maximal"; fi
+  expect_exit 2 "dimension 9 is not supported (supported: 1-8)" -- generate $method --dim 9 --radius 1.1
+done
 expect_exit 2 "dimension 21202 is not supported (supported: 1-21201)" -- generate sobol --count 10 --dim 21202
 expect_exit 2 "GiB" -- generate sobol --count 100000000 --dim 21201
 expect_exit 2 "axis 0 is empty" -- generate random --count 10 --bounds 1,0,1,1

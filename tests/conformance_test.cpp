@@ -12,6 +12,7 @@
 #include "pds/analysis/maximality.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/registry.h"
+#include "suite_dims.h"
 
 namespace pds {
 namespace {
@@ -39,7 +40,7 @@ std::string case_name(const ::testing::TestParamInfo<Case>& info) {
 std::vector<Case> all_cases(bool spaced_only = false) {
   std::vector<Case> cases;
   for (const Method& m : methods())
-    for (int dim : m.dims.tested())
+    for (int dim : testing_suites::suite_dims(m))
       for (bool torus : {false, true}) {
         if (m.takes_count && !spaced_only) {
           cases.push_back({m.name, dim, torus, false});

@@ -26,6 +26,7 @@
 #include "pds/error.h"
 #include "pds/registry.h"
 #include "pds/rng.h"
+#include "suite_dims.h"
 
 namespace pds {
 namespace {
@@ -61,7 +62,7 @@ std::vector<const Method*> spaced_methods() {
 
 GenerateRequest random_request(Rng& rng, const Method& m) {
   GenerateRequest r;
-  const std::vector<int> dims = m.dims.tested();
+  const std::vector<int> dims = testing_suites::suite_dims(m);
   r.dim = dims[rng.next() % dims.size()];
   r.torus = rng.next() % 2 == 0;
   r.seed = rng.next() % 1000000;

@@ -15,6 +15,7 @@
 #include "pds/analysis/maximality.h"
 #include "pds/error.h"
 #include "pds/registry.h"
+#include "suite_dims.h"
 
 namespace pds {
 namespace {
@@ -39,7 +40,7 @@ std::string case_name(const ::testing::TestParamInfo<Case>& info) {
 std::vector<Case> cases() {
   std::vector<Case> out;
   for (const Method& m : methods())
-    for (int dim : m.dims.tested())
+    for (int dim : testing_suites::suite_dims(m))
       for (bool torus : {false, true})
         for (double f : {0.3, 0.9, 1.5, 2.2, 2.33, 3.0, 4.0}) out.push_back({m.name, dim, torus, f});
   return out;

@@ -96,7 +96,8 @@ class PoissonDisk:
     ----------
     d : int
         Dimension of the parameter space: any the method takes (1 to 8
-        for "bridson" and "dart-throwing", 1 to 5 for "ebeida" and "wei").
+        for "bridson", "dart-throwing", "ebeida" and "wei"; past 5 the last
+        two serve small sets only, docs/dimensions.md).
     radius : float
         Minimal distance to keep between points (default 0.05), in the units
         of the bounds.

@@ -1,5 +1,5 @@
 #pragma once
-// Fast maximal Poisson disk sampling on a flat quadtree (Ebeida et al.), 1 to 5 dimensions.
+// Fast maximal Poisson disk sampling on a flat quadtree (Ebeida et al.), 1 to 8 dimensions.
 
 #include <algorithm>
 #include <array>
@@ -39,14 +39,17 @@ struct EbeidaParams {
 /// maximal (every point of the domain lies within `radius` of a sample, up to
 /// a slack of 1e-12 radius plus a few units of rounding of the coordinates); same
 /// seed, same points, on every platform.
-/// D from 1 to 5: in 5D darts are drawn in sequence from a list of the open
-/// sub-cells (the sweep's neighbourhoods hold 16,807 cells there); past 5D
-/// the sub-cells that cannot be proven covered multiply nearly 2^D-fold a
-/// level (docs/dimensions.md).
+/// D from 1 to 8: from 5D darts are drawn in sequence from a list of the open
+/// sub-cells (the sweep's neighbourhoods hold 16,807 cells there). Past 5D
+/// the sub-cells that one disk does not cover multiply nearly 2^D-fold a
+/// level and the run slows steeply: tens of samples a second in 7D, about
+/// one in 8D on a torus (docs/dimensions.md); for larger sets there, bridson.
 /// Invalid: a radius that is not positive and finite, whose densest packing
-/// exceeds max_points, or (5D) whose sub-cells could need more than 4 GiB.
-/// Failure: sub-cells still open after 63 levels in 2D, 41 in 3D, 60 in 5D (a
-/// numerical breakdown; not seen in testing).
+/// exceeds max_points, or (from 5D) whose sub-cells could need more than 4 GiB.
+/// Failure: sub-cells still open after 63 levels in 2D, 41 in 3D, 60 from 5D
+/// (a numerical breakdown; not seen in testing), or more open sub-cells a
+/// grid cell than the memory bound was sized for (from 6D; not seen in testing
+/// at the present bound, seen at half of it on an 8D torus of period r).
 template <int D>
 PointSet<D> ebeida(const EbeidaParams& params, const Domain<D>& domain, std::uint64_t seed);
 

@@ -10,14 +10,12 @@
 
 namespace pds::registry_detail {
 
-// wei refines cells of edge r/sqrt(D) by phase groups of 2^D: past 4
-// dimensions its open cells outgrow the samples (40 s for 5,000 points in
-// 5D); bridson serves 5 to 8 dimensions (docs/dimensions.md). ebeida lists
-// its open sub-cells in 5 dimensions and stops there: past it the sub-cells
-// it cannot prove covered multiply nearly 2^D-fold a level
-// (src/pds/samplers/ebeida.cpp).
-constexpr int kWeiMaxDim = 5;
-constexpr int kEbeidaMaxDim = 5;
+// Both run in 1 to 8 dimensions, but past 5 they serve small sets only:
+// the open cells they cannot prove covered outgrow the samples (ebeida: a
+// few hundred samples a minute in 7D, about one a second in 8D); bridson
+// serves large sets there (docs/dimensions.md).
+constexpr int kWeiMaxDim = 8;
+constexpr int kEbeidaMaxDim = 8;
 
 const Method& dunbar_humphreys_method() {
   static const Method method{
@@ -73,9 +71,11 @@ const Method& wei_method() {
       // Measured 2.9 in 1D and 2.4 in 2D, 5.3 over the estimate's typical
       // count in 3D; from 4D the open parts of the finer levels dominate: 53
       // MB for 35,147 points in 4D, 680 MB for 103,730 in 5D (unit torus,
-      // docs/wei.md).
+      // docs/wei.md). Past 5D, 1.5 times the ratio measured on the unit torus
+      // (scripts/peak_memory.py, 820, 261 and 63 points): 349 in 6D, 1,505 in
+      // 7D, 31,366 in 8D.
       .memory_ratio = 3.5,
-      .memory_ratio_from_dim = {{3, 6.5}, {4, 50}, {5, 170}},
+      .memory_ratio_from_dim = {{3, 6.5}, {4, 50}, {5, 170}, {6, 550}, {7, 2300}, {8, 47000}},
       .params =
           {{"k", double(WeiParams{}.trials), 1, 1000, true,
             "dart passes per level (each a unit of dart-throwing time: a Poisson(1) number of darts per empty cell)"},
@@ -123,9 +123,11 @@ const Method& ebeida_method() {
               {3, true, 0.08, 0.78, 0.83}},
       // Measured 8.2 in 2D; over the estimate's typical count 16.6 in 3D,
       // 20.7 in 4D and 249 in 5D, where the listed sub-cells hold about 18 KB
-      // a sample (docs/reliability.md).
+      // a sample (docs/reliability.md). Past 5D, 1.5 times the ratio measured
+      // on the unit torus (scripts/peak_memory.py, 822, 256 and 63 points):
+      // 1,248 in 6D, 4,629 in 7D, 18,552 in 8D.
       .memory_ratio = 11,
-      .memory_ratio_from_dim = {{3, 20}, {4, 25}, {5, 300}},
+      .memory_ratio_from_dim = {{3, 20}, {4, 25}, {5, 300}, {6, 2000}, {7, 7000}, {8, 28000}},
       .run =
           [](const GenerateRequest& r) {
             const EbeidaParams params{*r.radius, r.max_points, r.progress};

@@ -519,7 +519,11 @@ class EbeidaSampler {
 // with the single-disk test alone, 1.8 s with both; at about 700 samples in
 // 6D 29 s and 370 MB, then 11 s and 82 MB; in 7D 54 million sub-cells open at
 // level 2 for 627 samples (5.5 GB), then 3.9 million at level 1 and no end
-// in 100 s. So the method stops at 5 dimensions.
+// in 100 s. Past 5D the run stays exact but slows steeply with the dimension:
+// on the unit torus 232 samples took 30 s in 7D and 42 took 41 s in 8D
+// (docs/dimensions.md), most of it in the union test. Splitting one axis a
+// level instead of all D (2 children, not 2^D) was tried: it tests fewer
+// children but fails more tests, and was slower (13 s against 6 s in 7D).
 template <int D>
 class EbeidaListSampler {
   /// An open sub-cell at the current level: its lower corner and its grid cell
@@ -530,10 +534,13 @@ class EbeidaListSampler {
   };
   static constexpr int kChildren = 1 << D;
   static constexpr int kMaxLevels = 60;  // sub-cells of diagonal 2^-60 r, far below the slack
-  // Open sub-cells per grid cell at any level: measured peak 6 in 5D with the
-  // single-disk test alone (unit torus, 700 samples); a level past this is
-  // refused as a breakdown.
-  static constexpr std::size_t kMaxSubsPerCell = kChildren / 2;
+  // Open sub-cells per grid cell at any level, which sizes the memory bound
+  // below: measured peaks 6 in 5D with the single-disk test alone (unit torus,
+  // 700 samples); with both tests 3.8 in 6D, 4.8 in 7D and 2.8 to 10 in 8D on
+  // the unit torus, 5.0, 7.4 and 7.0 in unit boxes (6D to 8D, 66 to 414
+  // samples), and over 32 on an 8D torus of period r (7 samples), whose disks
+  // reach round it. A level past this stops the run.
+  static constexpr std::size_t kMaxSubsPerCell = std::min(kChildren / 2, 64);
   static constexpr double kMaxBytes = 0x1.0p32;  // what the bound above may come to: 4 GiB
 
  public:
@@ -792,7 +799,7 @@ class EbeidaListSampler {
       if (next.size() > kMaxSubsPerCell * hood_.size() + 4096)
         throw Failure("ebeida: " + std::to_string(next.size()) + " sub-cells open at refinement level " +
                       std::to_string(level_ + 1) + ", more than " + std::to_string(kMaxSubsPerCell) +
-                      " per grid cell (numerical breakdown)");
+                      " per grid cell, past the memory the run was sized for");
     }
     return next;
   }
@@ -831,6 +838,9 @@ PDS_INSTANTIATE(2)
 PDS_INSTANTIATE(3)
 PDS_INSTANTIATE(4)
 PDS_INSTANTIATE(5)
+PDS_INSTANTIATE(6)
+PDS_INSTANTIATE(7)
+PDS_INSTANTIATE(8)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -140,6 +140,37 @@ TEST(Ebeida, FiveDimensionsMinimumDistanceMaximalAndSaturated) {
   EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(ebeida<5>({0.1}, thin, 2), thin, 0.1));
 }
 
+// Past 5D the run is exact but slow (docs/dimensions.md): small sets (tens to
+// hundreds of samples), a box off the origin with unequal edges and its
+// torus, each checked against every pair and by the exact maximality
+// analysis; the seed checks once, in 6D (the same template code in all).
+template <int D>
+void check_high_dimensional(double box_r, double torus_r, std::size_t at_least, bool check_seeds = false) {
+  Domain<D> box;
+  for (int a = 0; a < D; ++a) {
+    box.lo[a] = -0.5 + 0.1 * a;
+    box.hi[a] = box.lo[a] + 1.0 + 0.02 * a;
+  }
+  const auto in_box = ebeida<D>({box_r}, box, 5);
+  EXPECT_GT(in_box.size(), at_least);
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(in_box, box, box_r));
+  if (check_seeds) {
+    EXPECT_EQ(in_box, ebeida<D>({box_r}, box, 5));
+    EXPECT_NE(in_box, ebeida<D>({box_r}, box, 6));
+  }
+  Domain<D> torus = box;
+  torus.periodic = true;
+  const auto on_torus = ebeida<D>({torus_r}, torus, 5);
+  EXPECT_GT(on_torus.size(), 2u);
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(on_torus, torus, torus_r));
+}
+
+TEST(Ebeida, SixDimensionsMinimumDistanceMaximalInsideAndReproducible) {
+  check_high_dimensional<6>(0.6, 0.7, 150, true);
+}
+TEST(Ebeida, SevenDimensionsMinimumDistanceMaximalInside) { check_high_dimensional<7>(0.8, 0.85, 100); }
+TEST(Ebeida, EightDimensionsMinimumDistanceMaximalInside) { check_high_dimensional<8>(1.1, 1.05, 50); }
+
 // The 5D loop reports samples placed, monotone, the same points with and
 // without a listener, and stops when asked.
 TEST(Ebeida, FiveDimensionsReportProgressAndStop) {
@@ -172,6 +203,8 @@ TEST(Ebeida, RejectsBadInput) {
   EbeidaParams tiny{0.02};
   tiny.max_points = std::uint64_t{1} << 50;
   EXPECT_THROW(ebeida<5>(tiny, Domain<5>::unit(), 1), InvalidArgument);
+  // 8D: 6^8 cells (1.7 million) at r = 0.5 on the unit cube, past the bound.
+  EXPECT_THROW(ebeida<8>({0.5}, Domain<8>::unit(), 1), InvalidArgument);
 }
 
 }  // namespace
