@@ -111,7 +111,7 @@ SAN_EBEIDA_5D = *SameSeedSameBytesOtherSeedOtherPoints/ebeida_5d*:*RadiusHoldsBe
 # thread and saturation tests and its 5D registry cases (11-23 s each
 # instrumented); the 5D prefix test and the registry cases in 4D run the same
 # code instrumented.
-SAN_WEI = *Wei.MinimumDistanceInsideAndReproducible5D*:*Wei.MinimumDistanceInsideAndReproducible6D*:\
+SAN_WEI = *Wei.MinimumDistanceInsideAndReproducible5D*:*Wei.MinimumDistanceInsideAndReproducible6D*:*Wei.MinimumDistanceInsideAndReproducible7D*:\
 *Wei.MinimumDistanceInsideAndReproducible8D*:*Wei.SameBytesForOneTwoAndFourThreads5D*:\
 *Wei.FiveDimensionsNearlySaturated*:*Registry/*/wei_5d_*
 # Halton's 1,000 axes at 7,919 points, three times a scramble (the registry's

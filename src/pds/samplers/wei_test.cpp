@@ -110,6 +110,7 @@ void check_high_dimensional(double r, int levels, std::size_t at_least) {
 
 TEST(Wei, MinimumDistanceInsideAndReproducible5D) { check_high_dimensional<5>(0.35, 2, 60); }
 TEST(Wei, MinimumDistanceInsideAndReproducible6D) { check_high_dimensional<6>(0.5, 1, 40); }
+TEST(Wei, MinimumDistanceInsideAndReproducible7D) { check_high_dimensional<7>(0.7, 1, 20); }
 TEST(Wei, MinimumDistanceInsideAndReproducible8D) { check_high_dimensional<8>(0.9, 1, 10); }
 
 TEST(Wei, SameBytesForOneTwoAndFourThreads5D) {
