@@ -520,7 +520,7 @@ class EbeidaSampler {
 // 6D 29 s and 370 MB, then 11 s and 82 MB; in 7D 54 million sub-cells open at
 // level 2 for 627 samples (5.5 GB), then 3.9 million at level 1 and no end
 // in 100 s. Past 5D the run stays exact but slows steeply with the dimension:
-// on the unit torus 232 samples took 30 s in 7D and 42 took 41 s in 8D
+// on the unit torus 234 samples took 26 s in 7D and 44 took 36 s in 8D
 // (docs/dimensions.md), most of it in the union test. Splitting one axis a
 // level instead of all D (2 children, not 2^D) was tried: it tests fewer
 // children but fails more tests, and was slower (13 s against 6 s in 7D).

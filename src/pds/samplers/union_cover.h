@@ -61,16 +61,25 @@ class UnionCover {
     std::array<double, D> m = d_[start];
     for (int step = 0; step < kSteps && !(value < target); ++step) {
       // The disk that lowers the value fastest from here.
+      // The edges signed by m's axes once a step: each disk's slope is then a
+      // dot product without branches (the same sums, term for term).
+      std::array<double, D> signed_edge;
+      for (int a = 0; a < D; ++a) signed_edge[a] = m[a] > 0.0 ? edge[a] : m[a] < 0.0 ? -edge[a] : 0.0;
       std::size_t best = 0;
       double slope = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < k; ++i) {
         double g = q_[i];
-        for (int a = 0; a < D; ++a) g += edge[a] * (m[a] > 0.0 ? d_[i][a] : m[a] < 0.0 ? -d_[i][a] : 0.0);
+        for (int a = 0; a < D; ++a) g += signed_edge[a] * d_[i][a];
         if (g < slope) {
           slope = g;
           best = i;
         }
       }
+      // Every weighting's value is at least the least slope (the value is
+      // convex, and its linearization here is sum_i w_i g_i): once that
+      // reaches the target no weights can prove coverage, and the search
+      // stops with the answer it would end with.
+      if (!(slope < target)) return false;
       if (!(slope < value)) break;
       // The value along (1 - t) w + t e_best is convex and piecewise linear
       // in t: its least is at t = 1 or where some m_a crosses 0.
