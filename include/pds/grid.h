@@ -49,6 +49,7 @@ class Grid {
                               std::to_string(max_cells) + " cells");
       cells[i] = static_cast<int>(n);
       inv_edge_[i] = n / domain.extent(i);
+      edge_[i] = domain.extent(i) / n;
     }
     hood_ = GridNeighbourhood<D>(domain, cells);
     head_.assign(hood_.size(), -1);
@@ -214,7 +215,7 @@ class Grid {
     const double r2 = r * r;
     for (int a = 0; a < D; ++a) {
       const int n = hood_.cells(a);
-      const double edge = domain_.extent(a) / n;
+      const double edge = edge_[a];
       const double x = p[a] - domain_.lo[a];
       int lo = first[a], hi = last[a];
       if (!hood_.periodic()) {
@@ -256,7 +257,7 @@ class Grid {
             F& f) const {
     for (int k = 0; k < counts[A]; ++k) {
       const double g = gap2 + cells[A][k].gap2;
-      if (g > r2) continue;
+      if (g > r2) break;  // each axis's cells are sorted by gap: the rest are farther
       if constexpr (A + 1 == D) {
         if (!f(index + cells[A][k].offset)) return false;
       } else {
@@ -269,6 +270,7 @@ class Grid {
   Domain<D> domain_;
   GridNeighbourhood<D> hood_;
   std::array<double, D> inv_edge_{};
+  std::array<double, D> edge_{};  // a cell's edge along each axis
   double extent_scale_ = 0.0;
   std::vector<std::int32_t> head_;
   std::vector<std::int32_t> next_;
