@@ -60,11 +60,11 @@ class UnionCover {
     double mean_q = q_[start];
     std::array<double, D> m = d_[start];
     for (int step = 0; step < kSteps && !(value < target); ++step) {
-      // The disk that lowers the value fastest from here.
-      // The edges signed by m's axes once a step: each disk's slope is then a
-      // dot product without branches (the same sums, term for term).
+      // The edges signed by m's axes once a step: each disk's slope below is
+      // then a dot product without branches (the same sums, term for term).
       std::array<double, D> signed_edge;
       for (int a = 0; a < D; ++a) signed_edge[a] = m[a] > 0.0 ? edge[a] : m[a] < 0.0 ? -edge[a] : 0.0;
+      // The disk that lowers the value fastest from here.
       std::size_t best = 0;
       double slope = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < k; ++i) {
