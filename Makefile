@@ -95,7 +95,7 @@ empty :=
 space := $(empty) $(empty)
 SAN_GTEST_EXCLUDE = *SameDistributionAsTheLiteralMethod*:*MatchesMaximalDartThrowing*:*ComparedWithMaximalDartThrowing*:\
 *OneWindowPerPassLeavesThePhaseLattice*:*CountsStayWithinTheStatedBound*:*DefaultSpectrumMatches*:*PrefixHasTheLaw*:\
-*PrefixSpectrumMatches*:*Maximality.LatticeE8*:*SpreadsPointsIntoBlueNoise*:*Ebeida.FiveDimensions*:\
+*PrefixSpectrumMatches*:*Maximality.LatticeE8*:*SpreadsPointsIntoBlueNoise*:*Ebeida.FiveDimensions*:*Ebeida.SevenDimensions*:*Ebeida.EightDimensions*:\
 *Registry/*_6d_*:*Registry/*_7d_*:*Registry/*_8d_*:*Maximality.LatticeD5*:\
 *Elimination.SweepsRemoveWhatTheHeapRemovesInItsOrder*:*Sobol.ScrambledPairsKeepTheirNetQuality*:\
 *Fpo.ReachesTheOptimizedRelativeRadiusInABox*:*Registry/*best_candidate_5d_*:*Registry/*gbn_5d_*:\
