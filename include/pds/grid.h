@@ -49,7 +49,6 @@ class Grid {
                               std::to_string(max_cells) + " cells");
       cells[i] = static_cast<int>(n);
       inv_edge_[i] = n / domain.extent(i);
-      edge_[i] = domain.extent(i) / n;
     }
     hood_ = GridNeighbourhood<D>(domain, cells);
     head_.assign(hood_.size(), -1);
@@ -215,7 +214,7 @@ class Grid {
     const double r2 = r * r;
     for (int a = 0; a < D; ++a) {
       const int n = hood_.cells(a);
-      const double edge = edge_[a];
+      const double edge = hood_.edge(a);
       const double x = p[a] - domain_.lo[a];
       int lo = first[a], hi = last[a];
       if (!hood_.periodic()) {
@@ -270,7 +269,6 @@ class Grid {
   Domain<D> domain_;
   GridNeighbourhood<D> hood_;
   std::array<double, D> inv_edge_{};
-  std::array<double, D> edge_{};  // a cell's edge along each axis
   double extent_scale_ = 0.0;
   std::vector<std::int32_t> head_;
   std::vector<std::int32_t> next_;

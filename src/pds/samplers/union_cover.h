@@ -78,9 +78,9 @@ class UnionCover {
       // Every weighting's value is at least the least slope (the value is
       // convex, and its linearization here is sum_i w_i g_i): once that
       // reaches the target no weights can prove coverage, and the search
-      // stops with the answer it would end with.
+      // stops with the answer it would end with. (It also ends the search
+      // when no disk improves on the value, which is at least the target.)
       if (!(slope < target)) return false;
-      if (!(slope < value)) break;
       // The value along (1 - t) w + t e_best is convex and piecewise linear
       // in t: its least is at t = 1 or where some m_a crosses 0.
       const auto& d = d_[best];
