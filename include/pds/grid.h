@@ -99,8 +99,9 @@ class Grid {
 
   /// Cell coordinate of x along one axis, clamped into the grid.
   int cell_coord(double x, int axis) const {
-    const double c = std::floor((x - domain_.lo[axis]) * inv_edge_[axis]);
-    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(hood_.cells(axis) - 1)));
+    const double last = static_cast<double>(hood_.cells(axis) - 1);
+    const double c = std::clamp((x - domain_.lo[axis]) * inv_edge_[axis], 0.0, last);
+    return static_cast<int>(c);  // not negative: the truncation is the floor
   }
 
   std::size_t cell_of(const Point<D>& p) const {
@@ -159,13 +160,22 @@ class Grid {
   }
 
   /// True if some stored point lies strictly closer than r to p.
-  bool any_closer_than(const Point<D>& p, double r) const {
+  bool any_closer_than(const Point<D>& p, double r) const { return find_closer_than(p, r) >= 0; }
+
+  /// The index of a stored point strictly closer than r to p (the first the
+  /// walk meets), or -1 if there is none.
+  std::int32_t find_closer_than(const Point<D>& p, double r) const {
     const double r2 = r * r;
-    return !for_each_cell_near(p, r, [&](std::size_t cell) {
+    std::int32_t found = -1;
+    for_each_cell_near(p, r, [&](std::size_t cell) {
       for (std::int32_t i = head_[cell]; i >= 0; i = next_[static_cast<std::size_t>(i)])
-        if (domain_.distance2(p, points_[static_cast<std::size_t>(i)]) < r2) return false;
+        if (domain_.distance2(p, points_[static_cast<std::size_t>(i)]) < r2) {
+          found = i;
+          return false;
+        }
       return true;
     });
+    return found;
   }
 
   /// Calls f(cell) for every cell that may hold a point within distance r of
@@ -182,8 +192,8 @@ class Grid {
       // would not fit an int, and a window past the box, or longer than a
       // period of a torus, takes the whole axis anyway.
       const double bound = static_cast<double>(hood_.cells(i)) + 1.0;
-      first[i] = static_cast<int>(std::clamp(std::floor((x - r) * inv_edge_[i]), -bound, 2.0 * bound));
-      last[i] = static_cast<int>(std::clamp(std::floor((x + r) * inv_edge_[i]), -bound, 2.0 * bound));
+      first[i] = clamped_floor((x - r) * inv_edge_[i], bound);
+      last[i] = clamped_floor((x + r) * inv_edge_[i], bound);
     }
     if constexpr (D >= 4) {
       return for_each_cell_pruned(p, r, first, last, f);
@@ -194,6 +204,15 @@ class Grid {
   }
 
  private:
+  // floor(v) clamped into [-bound, 2 bound] (bound a whole number), as an
+  // int: clamped before the cast, then truncated and corrected below zero
+  // (std::floor is a long instruction sequence on baseline x86-64).
+  static int clamped_floor(double v, double bound) {
+    v = std::clamp(v, -bound, 2.0 * bound);
+    const int t = static_cast<int>(v);
+    return t - (v < t);
+  }
+
   // The cells of the block [first, last] whose gap to p is at most r, each
   // once: per axis the candidate cells (wrapped on a torus, clipped in a box)
   // with their squared gap to p (the smallest over a cell's images), then a
@@ -228,25 +247,54 @@ class Grid {
         return hood_.for_each_cell(hood_.window(first, last),
                                    [&](std::size_t cell, const std::array<int, D>&) { return f(cell); });
       const bool whole_period = hood_.periodic() && last[a] - first[a] + 1 > n;
+      std::array<Candidate, kMaxPerAxis> block;
+      int count = 0;
       for (int u = lo; u <= hi; ++u) {
         int periods = 0, cell = u;
         if (hood_.periodic()) cell = hood_.wrap(u, a, periods);
         // The gap to the image at u; over a whole period, to the nearest of
         // the cell's images (x lies in [0, L), so one period either way).
-        double gap = std::max({0.0, u * edge - x, x - (u + 1) * edge});
+        double gap = std::max(0.0, std::max(u * edge - x, x - (u + 1) * edge));
         if (whole_period)
           for (const double shift : {-domain_.extent(a), domain_.extent(a)})
             gap = std::min(gap, std::max({0.0, u * edge + shift - x, x - (u + 1) * edge - shift}));
         if (gap * gap > r2) continue;
-        axis_cells[a][counts[a]++] = {static_cast<std::size_t>(cell) * hood_.stride(a), gap * gap};
+        block[count++] = {static_cast<std::size_t>(cell) * hood_.stride(a), gap * gap};
       }
+      counts[a] = count;
       // Nearest first along every axis, so the walk starts at p's own cell
-      // (a conflict query usually stops there).
-      // An insertion sort (a few cells; std::stable_sort allocates): stable,
-      // so ties keep the block's order on every platform.
-      for (int i = 1; i < counts[a]; ++i)
-        for (int j = i; j > 0 && axis_cells[a][j].gap2 < axis_cells[a][j - 1].gap2; --j)
-          std::swap(axis_cells[a][j], axis_cells[a][j - 1]);
+      // (a conflict query usually stops there), ties in the block's order
+      // (a stable sort) so that the order is the same on every platform.
+      auto& sorted = axis_cells[a];
+      if (whole_period) {
+        // Gaps to the nearest image: an insertion sort (a few cells;
+        // std::stable_sort allocates).
+        std::copy_n(block.begin(), count, sorted.begin());
+        for (int i = 1; i < count; ++i)
+          for (int j = i; j > 0 && sorted[j].gap2 < sorted[j - 1].gap2; --j) std::swap(sorted[j], sorted[j - 1]);
+      } else {
+        // Along a run of cells the gap falls to p's cell and rises after it
+        // (strictly, but for the zeros of a p on a face), so the sorted order
+        // merges the cells before the first nearest one, walked backwards,
+        // with the rest, walked forwards: a merge, not a sort (the per-axis
+        // set-up was most of a 4D conflict query's instructions).
+        if (count == 3 && block[1].gap2 < block[0].gap2 && block[1].gap2 <= block[2].gap2) {
+          // p's cell between its two neighbours (nearly always from 4D,
+          // where cells have edge about r): the nearer neighbour second.
+          const bool lower_first = block[0].gap2 <= block[2].gap2;
+          sorted[0] = block[1];
+          sorted[1] = block[lower_first ? 0 : 2];
+          sorted[2] = block[lower_first ? 2 : 0];
+          continue;
+        }
+        int m = 0;
+        for (int i = 1; i < count; ++i)
+          if (block[i].gap2 < block[m].gap2) m = i;
+        int left = m - 1, right = m;
+        for (int k = 0; k < count; ++k)
+          sorted[k] =
+              (right == count || (left >= 0 && block[left].gap2 <= block[right].gap2)) ? block[left--] : block[right++];
+      }
     }
     return walk<0>(axis_cells, counts, 0, 0.0, r2, f);
   }

@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "pds/rng.h"
@@ -10,6 +14,58 @@
 
 namespace pds {
 namespace {
+
+// The order of the pruned walk (from 4D), rebuilt the slow way: along each
+// axis the block's cells with their gaps to p (to the nearest image when the
+// block spans a period), stably sorted by gap, then every combination in
+// lexicographic order whose summed squared gaps stay within r^2. Callers sum
+// over neighbours in this order, so it must not depend on how the sort is done.
+template <int D>
+std::optional<std::vector<std::size_t>> expected_walk(const Grid<D>& grid, const Point<D>& p, double r) {
+  const Domain<D>& domain = grid.domain();
+  const auto& hood = grid.neighbourhood();
+  double scale = 0.0;
+  for (int a = 0; a < D; ++a) scale = std::max({scale, std::abs(domain.lo[a]), std::abs(domain.hi[a])});
+  r = r * (1.0 + 1e-12) + 1e-12 * scale;  // the grid's widening
+  std::array<std::vector<std::pair<double, std::size_t>>, D> axis;
+  for (int a = 0; a < D; ++a) {
+    const double x = p[a] - domain.lo[a], edge = hood.edge(a), inv_edge = hood.cells(a) / domain.extent(a);
+    const int n = hood.cells(a);
+    int lo = static_cast<int>(std::floor((x - r) * inv_edge)), hi = static_cast<int>(std::floor((x + r) * inv_edge));
+    const bool whole = domain.periodic && hi - lo + 1 > n;
+    if (whole) {  // every cell once, at its nearest image
+      lo = 0;
+      hi = n - 1;
+    } else if (!domain.periodic) {
+      lo = std::max(lo, 0);
+      hi = std::min(hi, n - 1);
+    }
+    if (hi - lo + 1 > 8) return std::nullopt;  // fine cells: the grid takes the plain window
+    for (int u = lo; u <= hi; ++u) {
+      double gap = std::max({0.0, u * edge - x, x - (u + 1) * edge});
+      if (whole)
+        for (double shift : {-domain.extent(a), domain.extent(a)})
+          gap = std::min(gap, std::max({0.0, u * edge + shift - x, x - (u + 1) * edge - shift}));
+      if (gap * gap > r * r) continue;
+      int periods = 0;
+      const int cell = domain.periodic ? hood.wrap(u, a, periods) : u;
+      axis[a].push_back({gap * gap, static_cast<std::size_t>(cell) * hood.stride(a)});
+    }
+    std::stable_sort(axis[a].begin(), axis[a].end(), [](const auto& s, const auto& t) { return s.first < t.first; });
+  }
+  std::vector<std::size_t> cells;
+  const auto walk = [&](auto&& self, int a, std::size_t index, double gap2) -> void {
+    for (const auto& [g, offset] : axis[a]) {
+      if (gap2 + g > r * r) break;
+      if (a + 1 == D)
+        cells.push_back(index + offset);
+      else
+        self(self, a + 1, index + offset, gap2 + g);
+    }
+  };
+  walk(walk, 0, 0, 0.0);
+  return cells;
+}
 
 // Every neighbour query of the grid equals the brute-force answer, for points
 // near the faces and corners, on boxes and tori, with radii around and above
@@ -43,6 +99,20 @@ void check_against_brute_force(const Domain<D>& domain, double grid_radius, std:
       EXPECT_EQ(found, expected) << domain << " query " << p << " r " << r;
       EXPECT_EQ(grid.any_closer_than(p, r), std::any_of(expected.begin(), expected.end(),
                                                         [&](int i) { return domain.distance2(p, points[i]) < r * r; }));
+      const std::int32_t closer = grid.find_closer_than(p, r);
+      if (closer >= 0) {
+        EXPECT_LT(domain.distance2(p, points[static_cast<std::size_t>(closer)]), r * r);
+      }
+      if constexpr (D >= 4) {
+        if (const auto expected_cells = expected_walk(grid, p, r)) {
+          std::vector<std::size_t> walked;
+          grid.for_each_cell_near(p, r, [&](std::size_t cell) {
+            walked.push_back(cell);
+            return true;
+          });
+          EXPECT_EQ(walked, *expected_cells) << domain << " query " << p << " r " << r;
+        }
+      }
     }
   }
 }

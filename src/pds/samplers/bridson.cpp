@@ -578,16 +578,31 @@ class BridsonGrid {
 // around a candidate outgrows everything else: there the shared grid with
 // cells of edge r and a pruned walk (Grid::for_conflicts) answers instead
 // (docs/dimensions.md has the measurements).
+//
+// A picked sample's candidates fall around it, so the samples that rejected
+// its last few candidates often reject the next one (a quarter of the
+// candidates in 4D at 10^5): the last eight are tried first, from a copy of
+// their coordinates, before the walk. Speed only: a candidate is refused only
+// for a stored sample closer than r, in the grid's own arithmetic, so the
+// answers are the grid's.
 template <int D>
 class ConflictGrid {
  public:
   ConflictGrid(const Domain<D>& domain, double radius, const PointSet<D>&)
-      : grid_(Grid<D>::for_conflicts(domain, radius)), radius_(radius) {}
+      : grid_(Grid<D>::for_conflicts(domain, radius)), radius_(radius), radius2_(radius * radius) {}
   struct Placed {
     Point<D> point;
   };
-  bool is_free(const Point<D>& p, std::size_t&, Placed& placed) const {
-    if (grid_.any_closer_than(p, radius_)) return false;
+  bool is_free(const Point<D>& p, std::size_t&, Placed& placed) {
+    for (int i = 0; i < recent_count_; ++i)
+      if (grid_.domain().distance2(p, recent_[i]) < radius2_) return false;
+    const std::int32_t hit = grid_.find_closer_than(p, radius_);
+    if (hit >= 0) {
+      recent_[next_recent_] = grid_.points()[static_cast<std::size_t>(hit)];
+      next_recent_ = (next_recent_ + 1) % kRecent;
+      recent_count_ = std::min(recent_count_ + 1, kRecent);
+      return false;
+    }
     placed.point = p;
     return true;
   }
@@ -595,8 +610,11 @@ class ConflictGrid {
   void prefetch_around(const Point<D>&) const {}
 
  private:
+  static constexpr int kRecent = 8;
   Grid<D> grid_;
-  double radius_;
+  double radius_, radius2_;
+  std::array<Point<D>, kRecent> recent_{};
+  int recent_count_ = 0, next_recent_ = 0;
 };
 
 // How many of k points uniform in the ball of radius 2r lie outside the ball
