@@ -52,7 +52,9 @@ expect_exit 2 "axis 0 has 1 for radius 0.3" -- generate dunbar-humphreys --radiu
 # depends on where the torus seeds fall.)
 expect_exit 1 "the coordinates are too coarse for this radius" -- generate dunbar-humphreys --radius 0.2 --torus \
   --bounds 100000000000000,100000000000000,100000000000002,100000000000002
-expect_exit 2 "dimension 4 is not supported" -- generate jittered --count 10 --dim 4
+expect_exit 2 "dimension 9 is not supported (supported: 1-8)" -- generate jittered --count 10 --dim 9
+# Strata in any dimension take a count with D near-equal factors, and name the nearest ones.
+expect_exit 2 "nearest counts that can: 8 and 16" -- generate jittered --count 10 --dim 4
 # ebeida and wei run to 8D through the registry: small sets, spaced by the
 # analysis, and ebeida's maximal; 9D is refused.
 b8=0,0,0,0,0,0,0,0,1,1,1,1,1,1,1,1

@@ -12,7 +12,7 @@
 namespace pds {
 
 struct JitteredParams {
-  std::array<int, 3> cells{1, 1, 1};  // strata per axis (the first D are used), each >= 1
+  std::array<int, kMaxDim> cells{1, 1, 1, 1, 1, 1, 1, 1};  // strata per axis (the first D are used), each >= 1
   // Optional progress (points made, against their number) and cancellation (pds/progress.h).
   Progress progress;
 };

@@ -12,7 +12,8 @@
 namespace pds {
 
 struct MultiJitteredParams {
-  std::array<int, 3> cells{32, 32, 1};  // strata per axis (the first D are used), each >= 1; N = their product
+  // Strata per axis (the first D are used), each >= 1; N = their product.
+  std::array<int, kMaxDim> cells{32, 32, 1, 1, 1, 1, 1, 1};
   bool correlated = true;  // Kensler: one shuffle per axis, not one per column (lower variance in practice)
   // Optional progress (points made, against N) and cancellation (pds/progress.h).
   Progress progress;

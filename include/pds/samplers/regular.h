@@ -11,7 +11,7 @@
 namespace pds {
 
 struct RegularParams {
-  std::array<int, 3> cells{1, 1, 1};  // cells per axis (the first D are used), each >= 1
+  std::array<int, kMaxDim> cells{1, 1, 1, 1, 1, 1, 1, 1};  // cells per axis (the first D are used), each >= 1
   // Optional progress (points made, against their number) and cancellation (pds/progress.h).
   Progress progress;
 };

@@ -50,10 +50,11 @@ const Method& regular_method() {
       .min_distance = true,
       .exact_count = true,
       .deterministic = true,
+      .dims = {kMinDim, kMaxDim},
       .memory_ratio = 2,
       .run =
           [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
+            return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               constexpr int D = std::decay_t<decltype(domain.lo)>::dim;
               if (r.count && r.radius) throw InvalidArgument("regular: give --count or --radius, not both");
               const auto cells = r.count ? strata_for_count(domain, *r.count) : strata_for_spacing(domain, *r.radius);
@@ -80,10 +81,11 @@ const Method& jittered_method() {
       .takes_count = true,
       .exact_count = true,
       .compare = true,
+      .dims = {kMinDim, kMaxDim},
       .memory_ratio = 2,
       .run =
           [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
+            return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               const auto cells = strata_for_count(domain, *r.count);
               JitteredParams params;
               std::copy(cells.begin(), cells.end(), params.cells.begin());
@@ -106,6 +108,7 @@ const Method& multi_jittered_method() {
           "Correlated multi-jittered sampling, Pixar Technical Memo 13-01, 2013",
       .takes_count = true,
       .exact_count = true,
+      .dims = {kMinDim, kMaxDim},
       .memory_ratio = 2,
       .params = {{.name = "correlated",
                   .default_value = 1,
@@ -115,7 +118,7 @@ const Method& multi_jittered_method() {
                   .help = "1: Kensler's correlated shuffle (one per axis); 0: Chiu et al.'s (one per column)"}},
       .run =
           [](const GenerateRequest& r) {
-            return run_typed(r, [&](const auto& domain) {
+            return run_typed<kMinDim, kMaxDim>(r, [&](const auto& domain) {
               const auto cells = strata_for_count(domain, *r.count);
               MultiJitteredParams params;
               std::copy(cells.begin(), cells.end(), params.cells.begin());

@@ -69,10 +69,15 @@ TEST(Registry, RejectsBadCounts) {
 }
 
 TEST(Registry, RejectsUnsupportedDimensions) {
-  for (int dim : {0, 1, 4, -2}) {
+  for (int dim : {0, 1, 3, -2}) {
     GenerateRequest r = with_count(16);
     r.dim = dim;
-    expect_rejected("jittered", r, "dimension " + std::to_string(dim) + " is not supported");  // 2-3
+    expect_rejected("jones", r, "dimension " + std::to_string(dim) + " is not supported");  // 2
+  }
+  for (int dim : {0, kMaxDim + 1}) {
+    GenerateRequest r = with_count(16);
+    r.dim = dim;
+    expect_rejected("jittered", r, "dimension " + std::to_string(dim) + " is not supported");  // 1-8
   }
   for (int dim : {0, -2, kMaxCloudDim + 1}) {
     GenerateRequest r = with_count(16);

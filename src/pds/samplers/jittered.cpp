@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/rng.h"
 #include "pds/samplers/strata.h"
@@ -37,7 +38,8 @@ PointSet<D> jittered(const JitteredParams& params, const Domain<D>& domain, std:
   return points;
 }
 
-template PointSet<2> jittered<2>(const JitteredParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> jittered<3>(const JitteredParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) template PointSet<D> jittered<D>(const JitteredParams&, const Domain<D>&, std::uint64_t);
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

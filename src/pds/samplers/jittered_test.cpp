@@ -41,6 +41,11 @@ TEST(Jittered, ExactlyOnePointPerStratum) {
   expect_one_point_per_stratum<2>(Domain<2>::box({-3, 1}, {5, 2}), {40, 5}, 2);
   expect_one_point_per_stratum<3>(Domain<3>::unit(true), {8, 8, 8}, 3);
   expect_one_point_per_stratum<3>(Domain<3>::box({0, 0, 0}, {1, 2, 3}), {3, 5, 7}, 4);
+  // Any dimension: the same code over D axes.
+  expect_one_point_per_stratum<1>(Domain<1>::box({-2}, {3}), {37}, 5);
+  expect_one_point_per_stratum<4>(Domain<4>::unit(true), {3, 4, 5, 2}, 6);
+  expect_one_point_per_stratum<6>(Domain<6>::box({0, -1, 0, 0, 2, 0}, {1, 1, 1, 0.5, 3, 1}), {2, 3, 2, 1, 2, 3}, 7);
+  expect_one_point_per_stratum<8>(Domain<8>::unit(), {2, 3, 2, 2, 3, 2, 2, 2}, 8);
 }
 
 TEST(Jittered, SeedsReproduceAndDiffer) {
@@ -84,6 +89,21 @@ TEST(Strata, CountsSplitIntoNearCubicCells) {
   const auto cells = strata_for_count<2>(Domain<2>::unit(), 1000);  // 40 x 25
   EXPECT_EQ(cells[0] * cells[1], 1000);
   EXPECT_LE(strata_aspect<2>(Domain<2>::unit(), cells), kMaxStratumAspect);
+}
+
+TEST(Strata, HigherDimensionsSplitIntoNearCubicCells) {
+  EXPECT_EQ(strata_for_count<4>(Domain<4>::unit(), 4096), (std::array<int, 4>{8, 8, 8, 8}));
+  EXPECT_EQ(strata_for_count<8>(Domain<8>::unit(), 6561), (std::array<int, 8>{3, 3, 3, 3, 3, 3, 3, 3}));
+  const auto box = Domain<5>::box({0, 0, 0, 0, 0}, {4, 1, 1, 1, 1});
+  const auto cells = strata_for_count<5>(box, 1024);
+  EXPECT_EQ(cells[0] * cells[1] * cells[2] * cells[3] * cells[4], 1024);
+  EXPECT_LE(strata_aspect<5>(box, cells), kMaxStratumAspect);
+  try {
+    strata_for_count<8>(Domain<8>::unit(), 257);  // prime
+    FAIL() << "257 points cannot form a near-cubic 8D grid";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("nearest counts that can: 256 and 384"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Strata, AnUnsplittableCountNamesItsNeighbours) {

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/rng.h"
 #include "pds/samplers/latin_hypercube.h"
@@ -81,7 +82,9 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
   return points;
 }
 
-template PointSet<2> multi_jittered<2>(const MultiJitteredParams&, const Domain<2>&, std::uint64_t);
-template PointSet<3> multi_jittered<3>(const MultiJitteredParams&, const Domain<3>&, std::uint64_t);
+#define PDS_INSTANTIATE(D) \
+  template PointSet<D> multi_jittered<D>(const MultiJitteredParams&, const Domain<D>&, std::uint64_t);
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -34,6 +34,10 @@ TEST(MultiJittered, KeepsJitterAndNRooks) {
       expect_jitter_and_n_rooks<2>({{x, y, 1}, correlated}, 17);
     for (auto [x, y, z] : {std::tuple{2, 2, 2}, {3, 4, 5}, {16, 16, 16}})
       expect_jitter_and_n_rooks<3>({{x, y, z}, correlated}, 17);
+    // Any dimension: the same code over D axes.
+    expect_jitter_and_n_rooks<1>({{12}, correlated}, 17);
+    expect_jitter_and_n_rooks<4>({{3, 4, 2, 5}, correlated}, 17);
+    expect_jitter_and_n_rooks<8>({{2, 3, 2, 2, 2, 3, 2, 2}, correlated}, 17);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/samplers/strata.h"
 
@@ -28,7 +29,8 @@ PointSet<D> regular(const RegularParams& params, const Domain<D>& domain) {
   return points;
 }
 
-template PointSet<2> regular<2>(const RegularParams&, const Domain<2>&);
-template PointSet<3> regular<3>(const RegularParams&, const Domain<3>&);
+#define PDS_INSTANTIATE(D) template PointSet<D> regular<D>(const RegularParams&, const Domain<D>&);
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
+#undef PDS_INSTANTIATE
 
 }  // namespace pds

@@ -6,25 +6,37 @@
 #include <limits>
 #include <string>
 
+#include "pds/detail/instantiate.h"
 #include "pds/error.h"
 
 namespace pds {
 namespace {
 
 // Calls f(cells) for every way of writing n as a product of D positive
-// factors, in axis order.
+// factors, in axis order, whose cells keep the aspect (longest edge over
+// shortest) within `limit`: a branch is dropped once its axes so far pass
+// it (the final aspect can only be larger), which keeps high dimensions cheap.
 template <int D, class F>
-void for_each_factorisation(std::uint64_t n, std::array<int, D>& cells, int axis, F&& f) {
+void for_each_factorisation(const Domain<D>& domain, std::uint64_t n, std::array<int, D>& cells, int axis,
+                            double shortest, double longest, double limit, F&& f) {
+  const auto fits = [&](std::uint64_t factor, double& lo, double& hi) {
+    if (factor > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) return false;
+    const double edge = domain.extent(axis) / static_cast<double>(factor);
+    lo = std::min(shortest, edge);
+    hi = std::max(longest, edge);
+    return hi / lo <= limit;
+  };
+  double lo, hi;
   if (axis == D - 1) {
-    if (n > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) return;
+    if (!fits(n, lo, hi)) return;
     cells[axis] = static_cast<int>(n);
     f(cells);
     return;
   }
   auto visit = [&](std::uint64_t factor) {
-    if (factor > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) return;
+    if (!fits(factor, lo, hi)) return;
     cells[axis] = static_cast<int>(factor);
-    for_each_factorisation<D>(n / factor, cells, axis + 1, f);
+    for_each_factorisation<D>(domain, n / factor, cells, axis + 1, lo, hi, limit, f);
   };
   for (std::uint64_t a = 1; a * a <= n; ++a) {
     if (n % a) continue;
@@ -33,17 +45,21 @@ void for_each_factorisation(std::uint64_t n, std::array<int, D>& cells, int axis
   }
 }
 
+// The split of `count` with the least aspect within `limit` (aspect set to
+// it), or aspect infinite when none keeps within it.
 template <int D>
-std::array<int, D> best_split(const Domain<D>& domain, std::uint64_t count, double& aspect) {
+std::array<int, D> best_split(const Domain<D>& domain, std::uint64_t count, double& aspect,
+                              double limit = kMaxStratumAspect) {
   std::array<int, D> cells{}, best{};
   aspect = std::numeric_limits<double>::infinity();
-  for_each_factorisation<D>(count, cells, 0, [&](const std::array<int, D>& c) {
-    const double a = strata_aspect<D>(domain, c);
-    if (a < aspect) {
-      aspect = a;
-      best = c;
-    }
-  });
+  for_each_factorisation<D>(domain, count, cells, 0, std::numeric_limits<double>::infinity(), 0.0, limit,
+                            [&](const std::array<int, D>& c) {
+                              const double a = strata_aspect<D>(domain, c);
+                              if (a < aspect) {
+                                aspect = a;
+                                best = c;
+                              }
+                            });
   return best;
 }
 
@@ -86,10 +102,10 @@ std::array<int, D> strata_for_count(const Domain<D>& domain, std::uint64_t count
       above = std::to_string(k);
       break;
     }
-  throw InvalidArgument("count " + std::to_string(count) +
-                        " cannot be split into a grid of near-cubic strata over this domain (best cell aspect " +
-                        std::to_string(aspect) + ", limit " + std::to_string(kMaxStratumAspect) +
-                        "); nearest counts that can: " + below + " and " + above);
+  throw InvalidArgument("count " + std::to_string(count) + " cannot be split into a grid of near-cubic strata over " +
+                        "this domain (no split of it into " + std::to_string(D) +
+                        " factors keeps the cells' longest edge within " + detail::format_number(kMaxStratumAspect) +
+                        " times the shortest); nearest counts that can: " + below + " and " + above);
 }
 
 template <int D>
@@ -118,8 +134,7 @@ std::array<int, D> strata_for_spacing(const Domain<D>& domain, double spacing) {
   template std::array<int, D> strata_for_count<D>(const Domain<D>&, std::uint64_t); \
   template std::array<int, D> strata_for_spacing<D>(const Domain<D>&, double);      \
   template double strata_aspect<D>(const Domain<D>&, const std::array<int, D>&);
-PDS_INSTANTIATE(2)
-PDS_INSTANTIATE(3)
+PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
 }  // namespace pds
