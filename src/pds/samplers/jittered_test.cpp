@@ -104,6 +104,14 @@ TEST(Strata, HigherDimensionsSplitIntoNearCubicCells) {
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find("nearest counts that can: 256 and 384"), std::string::npos) << e.what();
   }
+  // A large count: the search for its neighbours tries only divisors that can fit.
+  try {
+    strata_for_count<8>(Domain<8>::unit(), 99999989);
+    FAIL() << "99999989 points cannot form a near-cubic 8D grid";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("nearest counts that can: 99939840 and 100000000"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Strata, AnUnsplittableCountNamesItsNeighbours) {

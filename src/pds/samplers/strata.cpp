@@ -12,19 +12,44 @@
 namespace pds {
 namespace {
 
+// The factors a split of `count` within the aspect limit can give each axis:
+// in such a split every edge lies within a factor kMaxStratumAspect of the
+// smallest, so between g / limit and g limit, where g^D = volume / count;
+// a factor is the axis's extent over its edge. (Widened a little: the window
+// only saves work, the aspect test decides.)
+template <int D>
+std::array<std::array<std::uint64_t, 2>, D> factor_windows(const Domain<D>& domain, std::uint64_t count) {
+  double log_volume = 0.0;
+  for (int i = 0; i < D; ++i) log_volume += std::log(domain.extent(i));
+  const double log_g = (log_volume - std::log(static_cast<double>(count))) / D;
+  const double log_limit = std::log(kMaxStratumAspect) + 1e-6;
+  const double most = static_cast<double>(count);
+  std::array<std::array<std::uint64_t, 2>, D> windows;
+  for (int i = 0; i < D; ++i) {
+    const double centre = std::log(domain.extent(i)) - log_g;
+    const double lo = std::clamp(std::floor(std::exp(centre - log_limit)), 1.0, most);
+    const double hi = std::clamp(std::ceil(std::exp(centre + log_limit)), 1.0, most);
+    windows[i] = {static_cast<std::uint64_t>(lo), static_cast<std::uint64_t>(hi)};
+  }
+  return windows;
+}
+
 // Calls f(cells) for every way of writing n as a product of D positive
-// factors, in axis order, whose cells keep the aspect (longest edge over
-// shortest) within `limit`: a branch is dropped once its axes so far pass
-// it (the final aspect can only be larger), which keeps high dimensions cheap.
+// factors, in axis order (each divisor a ascending, then n / a), whose cells
+// keep the aspect (longest edge over shortest) within kMaxStratumAspect: a
+// branch is dropped once its axes so far pass it (the final aspect can only
+// be larger), and divisors outside the axis's window are not tried, which
+// keeps high dimensions and large counts cheap.
 template <int D, class F>
-void for_each_factorisation(const Domain<D>& domain, std::uint64_t n, std::array<int, D>& cells, int axis,
-                            double shortest, double longest, double limit, F&& f) {
+void for_each_factorisation(const Domain<D>& domain, const std::array<std::array<std::uint64_t, 2>, D>& windows,
+                            std::uint64_t n, std::array<int, D>& cells, int axis, double shortest, double longest,
+                            F&& f) {
   const auto fits = [&](std::uint64_t factor, double& lo, double& hi) {
     if (factor > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) return false;
     const double edge = domain.extent(axis) / static_cast<double>(factor);
     lo = std::min(shortest, edge);
     hi = std::max(longest, edge);
-    return hi / lo <= limit;
+    return hi / lo <= kMaxStratumAspect;
   };
   double lo, hi;
   if (axis == D - 1) {
@@ -36,24 +61,33 @@ void for_each_factorisation(const Domain<D>& domain, std::uint64_t n, std::array
   auto visit = [&](std::uint64_t factor) {
     if (!fits(factor, lo, hi)) return;
     cells[axis] = static_cast<int>(factor);
-    for_each_factorisation<D>(domain, n / factor, cells, axis + 1, lo, hi, limit, f);
+    for_each_factorisation<D>(domain, windows, n / factor, cells, axis + 1, lo, hi, f);
   };
-  for (std::uint64_t a = 1; a * a <= n; ++a) {
+  // a itself is tried within [first, last]; n / a within the window when a
+  // lies in [n / last, n / first]. Other divisors are skipped, in order.
+  const auto [first, last] = windows[static_cast<std::size_t>(axis)];
+  const std::uint64_t paired_first = n / last, paired_last = n / first + 1;
+  for (std::uint64_t a = std::max<std::uint64_t>(1, std::min(first, paired_first)); a * a <= n; ++a) {
+    const bool own = a >= first && a <= last, paired = a >= paired_first && a <= paired_last;
+    if (!own && !paired) {
+      if (a > last && a > paired_last) break;
+      a = (a < first && (first < paired_first || a > paired_last)) ? first - 1 : paired_first - 1;
+      continue;
+    }
     if (n % a) continue;
     visit(a);
     if (n / a != a) visit(n / a);
   }
 }
 
-// The split of `count` with the least aspect within `limit` (aspect set to
-// it), or aspect infinite when none keeps within it.
+// The split of `count` with the least aspect, if one keeps within
+// kMaxStratumAspect (aspect set to it); else aspect is infinite.
 template <int D>
-std::array<int, D> best_split(const Domain<D>& domain, std::uint64_t count, double& aspect,
-                              double limit = kMaxStratumAspect) {
+std::array<int, D> best_split(const Domain<D>& domain, std::uint64_t count, double& aspect) {
   std::array<int, D> cells{}, best{};
   aspect = std::numeric_limits<double>::infinity();
-  for_each_factorisation<D>(domain, count, cells, 0, std::numeric_limits<double>::infinity(), 0.0, limit,
-                            [&](const std::array<int, D>& c) {
+  for_each_factorisation<D>(domain, factor_windows(domain, count), count, cells, 0,
+                            std::numeric_limits<double>::infinity(), 0.0, [&](const std::array<int, D>& c) {
                               const double a = strata_aspect<D>(domain, c);
                               if (a < aspect) {
                                 aspect = a;
