@@ -580,7 +580,7 @@ class BridsonGrid {
 // (docs/dimensions.md has the measurements).
 //
 // A picked sample's candidates fall around it, so the samples that rejected
-// its last few candidates often reject the next one (a quarter of the
+// its last few candidates often reject the next one (a fifth of the
 // candidates in 4D at 10^5): the last eight are tried first, from a copy of
 // their coordinates, before the walk. Speed only: a candidate is refused only
 // for a stored sample closer than r, in the grid's own arithmetic, so the
