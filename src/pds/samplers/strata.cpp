@@ -67,7 +67,8 @@ void for_each_factorisation(const Domain<D>& domain, const std::array<std::array
   // lies in [n / last, n / first]. Other divisors are skipped, in order.
   const auto [first, last] = windows[static_cast<std::size_t>(axis)];
   const std::uint64_t paired_first = n / last, paired_last = n / first + 1;
-  for (std::uint64_t a = std::max<std::uint64_t>(1, std::min(first, paired_first)); a * a <= n; ++a) {
+  // (a <= n / a: a^2 <= n without overflow, a window's start may lie far past sqrt(n).)
+  for (std::uint64_t a = std::max<std::uint64_t>(1, std::min(first, paired_first)); a <= n / a; ++a) {
     const bool own = a >= first && a <= last, paired = a >= paired_first && a <= paired_last;
     if (!own && !paired) {
       if (a > last && a > paired_last) break;
