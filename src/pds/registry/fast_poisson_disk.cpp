@@ -158,11 +158,11 @@ const Method& maximal_darts_method() {
               {2, true, 0.02, 0.755, 0.80},
               {3, false, 0.08, 0.82, 0.87},
               {3, true, 0.08, 0.78, 0.83}},
-      // scripts/peak_memory.py at 10^6: growth 3.9 times the output (the open
-      // sub-cells of the first refinement levels); in 3D 10.7 over the
-      // estimate's typical count.
-      .memory_ratio = 4.5,
-      .memory_ratio_from_dim = {{3, 12}},
+      // scripts/peak_memory.py at 10^6: growth 2.8 times the output (the grid,
+      // the samples and the open sub-cells of the first refinement levels),
+      // 2.3 over the estimate's typical count; in 3D 3.5 over it.
+      .memory_ratio = 3.5,
+      .memory_ratio_from_dim = {{3, 5}},
       .run =
           [](const GenerateRequest& r) {
             const MaximalDartsParams params{*r.radius, r.threads, r.max_points, r.progress};

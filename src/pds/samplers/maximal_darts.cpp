@@ -52,11 +52,13 @@
 // is handed to ebeida, the same process.
 //
 // Memory: a 4-byte state per grid cell, the samples, one window's
-// candidates, and from level 1 the open sub-cells.
+// candidates, and from level 1 the open sub-cells (packed by parent while
+// they are many: Siblings).
 #include "pds/samplers/maximal_darts.h"
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <span>
@@ -136,19 +138,53 @@ class MaximalDartsSampler {
     bool border;          // the cell's stencil crosses the grid's edge
   };
 
-  /// An open sub-cell: its cell and its position there, axis_bits(a, level)
-  /// bits along axis a.
+  /// A sub-cell's position in its cell, axis_bits(a, level) bits along axis a.
+  using Code = std::array<std::uint32_t, D>;
+
+  /// An open sub-cell: its cell and its code.
   struct Unit {
     std::uint32_t cell;  // kDead once a sample covers it whole
-    std::array<std::uint32_t, D> code;
+    Code code;
   };
   static constexpr std::uint32_t kDead = 0xffffffffu;
+
+  /// The open children of one parent, in 8 bytes: the cell (32 bits), which
+  /// of the 2^D children are open (one bit each), and the first child's code
+  /// (kSiblingBits bits an axis). Levels 1 to kSiblingBits, among them those
+  /// that hold millions of open sub-cells, keep them so: 1.8 a record at
+  /// levels 1-2 at 10^6 in 2D, 4.6 bytes an open sub-cell where a Unit takes
+  /// 12. Deeper levels, which hold a few thousand, keep Units.
+  struct Siblings {
+    std::uint64_t bits;
+  };
+  static constexpr int kSiblingBits = (32 - kChildren) / D;  // 14 in 2D, 8 in 3D
+  static_assert(kSiblingBits >= 1 && D * kSiblingBits + kChildren <= 32);
+  static constexpr std::uint64_t kAxisMask = (std::uint64_t{1} << kSiblingBits) - 1;
+
+  static Siblings make_siblings(std::uint32_t cell, unsigned open, const Code& first) {
+    std::uint64_t bits = std::uint64_t{cell} << 32 | std::uint64_t{open} << (D * kSiblingBits);
+    for (int a = 0; a < D; ++a) bits |= std::uint64_t{first[a]} << (a * kSiblingBits);
+    return {bits};
+  }
+  static std::uint32_t cell_of(Siblings g) { return static_cast<std::uint32_t>(g.bits >> 32); }
+  static unsigned open_of(Siblings g) {
+    return static_cast<unsigned>(g.bits >> (D * kSiblingBits)) & ((1u << kChildren) - 1);
+  }
+  static Code code_of(Siblings g, int child) {
+    Code code;
+    for (int a = 0; a < D; ++a)
+      code[a] = static_cast<std::uint32_t>((g.bits >> (a * kSiblingBits)) & kAxisMask) + ((child >> a) & 1);
+    return code;
+  }
+  static void close_child(Siblings& g, int child) { g.bits &= ~(std::uint64_t{1} << (D * kSiblingBits + child)); }
 
   struct Chunk {
     std::uint32_t begin = 0, end = 0;  // cells [begin, end)
     std::vector<Candidate> candidates;
     std::vector<std::uint32_t> closed;  // cells found covered, applied after the sweep
-    std::vector<Unit> units;            // open sub-cells (level >= 1), in cell order
+    // Open sub-cells (level >= 1), in cell order: one of the two is empty.
+    std::vector<Siblings> siblings;
+    std::vector<Unit> units;
     std::size_t kept = 0, base = 0;
   };
 
@@ -224,7 +260,10 @@ class MaximalDartsSampler {
 
   std::size_t open_units() const {
     std::size_t n = 0;
-    for (const Chunk& chunk : chunks_) n += chunk.units.size();
+    for (const Chunk& chunk : chunks_) {
+      n += chunk.units.size();
+      for (const Siblings g : chunk.siblings) n += static_cast<std::size_t>(std::popcount(open_of(g)));
+    }
     return n;
   }
 
@@ -291,8 +330,8 @@ class MaximalDartsSampler {
   /// Draws the darts of one unit (a cell at level 0: code all zero) for this
   /// window and keeps the candidates; returns false when a sample covers the
   /// unit whole.
-  bool throw_darts(Chunk& chunk, std::size_t cell, const Coords* coords, const std::array<std::uint32_t, D>& code,
-                   std::uint64_t stream, const PoissonTable& poisson) {
+  bool throw_darts(Chunk& chunk, std::size_t cell, const Coords* coords, const Code& code, std::uint64_t stream,
+                   const PoissonTable& poisson) {
     std::uint64_t counter = stream;
     const auto next = [&counter] { return mix64(counter += kGolden); };
     const int darts = poisson.draw(next());
@@ -336,7 +375,7 @@ class MaximalDartsSampler {
       chunk.candidates.clear();
       chunk.closed.clear();
       if (level_ == 0) {
-        const std::array<std::uint32_t, D> zero{};
+        const Code zero{};
         Coords c = hood_.coords(chunk.begin);
         for (std::size_t cell = chunk.begin; cell < chunk.end; ++cell) {
           if (state_[cell] == kOpen && !throw_darts(chunk, cell, &c, zero, mix64(key ^ (cell * kGolden)), poisson))
@@ -344,11 +383,19 @@ class MaximalDartsSampler {
           for (int a = 0; a < D && ++c[a] == n_[a]; ++a) c[a] = 0;
         }
       } else {
-        for (Unit& unit : chunk.units) {
-          std::uint64_t stream = mix64(key ^ (unit.cell * kGolden));
-          for (int a = 0; a < D; ++a) stream = mix64(stream + unit.code[a]);
-          if (!throw_darts(chunk, unit.cell, nullptr, unit.code, stream, poisson)) unit.cell = kDead;
-        }
+        // Returns false when the unit is found covered.
+        const auto throw_on = [&](std::uint32_t cell, const Code& code) {
+          std::uint64_t stream = mix64(key ^ (cell * kGolden));
+          for (int a = 0; a < D; ++a) stream = mix64(stream + code[a]);
+          return throw_darts(chunk, cell, nullptr, code, stream, poisson);
+        };
+        for (Siblings& g : chunk.siblings)
+          for (unsigned open = open_of(g); open != 0; open &= open - 1) {
+            const int child = std::countr_zero(open);
+            if (!throw_on(cell_of(g), code_of(g, child))) close_child(g, child);
+          }
+        for (Unit& unit : chunk.units)
+          if (!throw_on(unit.cell, unit.code)) unit.cell = kDead;
       }
       if (chunk.candidates.size() > kMaxChunkCandidates)
         throw Failure("maximal-darts: more than " + std::to_string(kMaxChunkCandidates) +
@@ -387,10 +434,16 @@ class MaximalDartsSampler {
           state = kOpen;
         }
       }
-      if (level_ > 0)
+      if (level_ > 0) {
+        std::erase_if(chunk.siblings, [&](Siblings g) { return open_of(g) == 0 || state_[cell_of(g)] >= 0; });
         std::erase_if(chunk.units, [&](const Unit& unit) { return unit.cell == kDead || state_[unit.cell] >= 0; });
-      // The first windows' candidates are the most; later ones need far less room.
-      if (chunk.candidates.capacity() > 4 * chunk.candidates.size() + 1024) {
+      }
+      // The first windows' candidates are the most; later ones need far less
+      // room. From level 1 a level has one window, and its candidates are
+      // freed with it: the next level's sub-cells then reuse their heap (held
+      // until the next window, they left holes that raised the peak by 2.5 MB
+      // at 10^6 in 2D).
+      if (level_ > 0 || chunk.candidates.capacity() > 4 * chunk.candidates.size() + 1024) {
         chunk.candidates.clear();
         chunk.candidates.shrink_to_fit();
       }
@@ -447,7 +500,11 @@ class MaximalDartsSampler {
     // (they start covered).
     std::array<bool, D> halved;
     unsigned waiting = 0;
-    for (int a = 0; a < D; ++a) halved[a] = axis_bits(a, level_) > axis_bits(a, parent_level);
+    bool as_siblings = !final;  // the children's codes fit Siblings
+    for (int a = 0; a < D; ++a) {
+      halved[a] = axis_bits(a, level_) > axis_bits(a, parent_level);
+      as_siblings = as_siblings && axis_bits(a, level_) <= kSiblingBits;
+    }
     for (int child = 0; child < kChildren; ++child)
       for (int a = 0; a < D; ++a)
         if ((child >> a) & 1 && !halved[a]) waiting |= 1u << child;
@@ -464,10 +521,12 @@ class MaximalDartsSampler {
       return least2 < r2_;
     });
     for_chunks(parent_level > 0, [&](std::size_t, Chunk& chunk) {
-      std::vector<Unit> children;
+      std::vector<Siblings> sibling_children;
+      std::vector<Unit> unit_children;
+      std::vector<Code> parents;                // the open units of one cell
       std::vector<std::array<double, D>> near;  // nearby samples' images, relative to the cell's lower corner
       chunk.closed.clear();
-      const auto split = [&](std::uint32_t cell, std::span<const Unit> parents) {
+      const auto split_parents = [&](std::uint32_t cell) {
         const Coords c = hood_.coords(cell);
         std::array<double, D> cell_lo, edge;
         for (int a = 0; a < D; ++a) {
@@ -482,9 +541,8 @@ class MaximalDartsSampler {
           for (int a = 0; a < D; ++a) d[a] = s[a] - cell_lo[a] + periods[a] * domain_.extent(a);
           near.push_back(d);
         });
-        const std::size_t before = children.size();
-        for (const Unit& parent : parents) {
-          const auto& code = parent.code;
+        bool any_open = false;
+        for (const Code& code : parents) {
           if (final) {
             // Within r + half a diagonal of a sample, every point of the unit
             // lies within r + a diagonal (5e-10 r); otherwise the unit's
@@ -500,13 +558,14 @@ class MaximalDartsSampler {
               }
               return d2 < reach * reach;
             });
-            if (!covered) children.push_back(parent);
+            if (!covered) unit_children.push_back(Unit{cell, code});
+            any_open = any_open || !covered;
             continue;
           }
           // The children's faces along each axis, relative to the cell's corner
           // (an axis not split: the parent's two faces, the second twice).
           std::array<std::array<double, 3>, D> face;
-          std::array<std::uint32_t, D> first;
+          Code first;
           for (int a = 0; a < D; ++a) {
             first[a] = halved[a] ? code[a] * 2 : code[a];
             for (int f = 0; f < 3; ++f)
@@ -539,38 +598,55 @@ class MaximalDartsSampler {
             }
             if (covered == (1u << kChildren) - 1) break;
           }
+          const unsigned open = ~covered & ((1u << kChildren) - 1);
+          if (open == 0) continue;
+          any_open = true;
+          if (as_siblings) {
+            sibling_children.push_back(make_siblings(cell, open, first));
+            continue;
+          }
           for (int child = 0; child < kChildren; ++child) {
-            if (covered & (1u << child)) continue;
+            if (!((open >> child) & 1)) continue;
             Unit unit{cell, {}};
             for (int a = 0; a < D; ++a) unit.code[a] = first[a] + static_cast<std::uint32_t>((child >> a) & 1);
-            children.push_back(unit);
+            unit_children.push_back(unit);
           }
         }
-        if (children.size() == before) chunk.closed.push_back(cell);
+        if (!any_open) chunk.closed.push_back(cell);
       };
+      // The parents cell by cell, in the order of their units.
       if (parent_level == 0) {
+        parents.assign(1, Code{});
         for (std::size_t cell = chunk.begin; cell < chunk.end; ++cell)
-          if (state_[cell] == kOpen) {
-            const Unit whole{static_cast<std::uint32_t>(cell), {}};
-            split(whole.cell, std::span<const Unit>(&whole, 1));
-          }
-      } else {
-        const std::span<const Unit> units(chunk.units);
-        for (std::size_t i = 0; i < units.size();) {
-          std::size_t j = i + 1;
-          while (j < units.size() && units[j].cell == units[i].cell) ++j;
-          split(units[i].cell, units.subspan(i, j - i));
-          i = j;
-        }
+          if (state_[cell] == kOpen) split_parents(static_cast<std::uint32_t>(cell));
       }
-      chunk.units = std::move(children);
-      chunk.units.shrink_to_fit();  // a vector grown by doubling would hold up to twice the open units
+      const std::span<const Siblings> groups(chunk.siblings);
+      for (std::size_t i = 0; i < groups.size();) {
+        parents.clear();
+        std::size_t j = i;
+        for (; j < groups.size() && cell_of(groups[j]) == cell_of(groups[i]); ++j)
+          for (unsigned open = open_of(groups[j]); open != 0; open &= open - 1)
+            parents.push_back(code_of(groups[j], std::countr_zero(open)));
+        split_parents(cell_of(groups[i]));
+        i = j;
+      }
+      const std::span<const Unit> units(chunk.units);
+      for (std::size_t i = 0; i < units.size();) {
+        parents.clear();
+        std::size_t j = i;
+        for (; j < units.size() && units[j].cell == units[i].cell; ++j) parents.push_back(units[j].code);
+        split_parents(units[i].cell);
+        i = j;
+      }
+      // A vector grown by doubling would hold up to twice the open units.
+      chunk.siblings = std::move(sibling_children);
+      chunk.siblings.shrink_to_fit();
+      chunk.units = std::move(unit_children);
+      chunk.units.shrink_to_fit();
     });
-    std::size_t open = 0;
-    for (Chunk& chunk : chunks_) {
+    for (Chunk& chunk : chunks_)
       for (const std::uint32_t cell : chunk.closed) state_[cell] = kCovered;
-      open += chunk.units.size();
-    }
+    const std::size_t open = open_units();
     // Open sub-cells peak near one per grid cell (level 1 or 2): a level that
     // leaves far more would keep growing 2^D-fold with each further one.
     if (open > 4 * hood_.size() + 4096)

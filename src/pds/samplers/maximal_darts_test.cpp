@@ -59,6 +59,18 @@ TEST(MaximalDarts, SameBytesForEveryThreadCount) {
   EXPECT_GE(min_distance(one, domain).distance, 0.003);
 }
 
+// Open sub-cells are kept as siblings of one parent while their codes fit 14
+// bits an axis (2D), one by one past that. This set's last sub-cells close at
+// level 18 (measured), so both forms and the switch between them run, and
+// the set must come out maximal (sets of a few thousand points end by level
+// 12, all in the first form).
+TEST(MaximalDarts, SubCellsPastFourteenLevelsFinishMaximal) {
+  const auto domain = Domain<2>::unit(true);
+  const auto points = run<2>(0.006, domain, 1);
+  EXPECT_GT(points.size(), 19000u);
+  EXPECT_TRUE(testing_checks::maximal_poisson_disk_set(points, domain, 0.006));
+}
+
 // Boxes far thinner than r along some axes (as Ebeida.ThinBoxesFinishMaximal):
 // the thin axes wait to be split, the sets are maximal, and the thread count
 // still does not change a byte.
