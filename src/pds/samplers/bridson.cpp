@@ -636,9 +636,14 @@ int annulus_hits(int k, Rng& rng) {
   return hits;
 }
 
+// Grows the set at `radius` from `seed`. With count_only, where the grid does
+// not read the samples back (every dimension but 3, whose grid holds indices
+// into them), the samples are counted into *count_only and not kept (the
+// result is empty): the same draws and decisions, without the output's
+// memory.
 template <int D, bool Periodic, bool Scipy>
 PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& params, std::uint64_t seed,
-                 const Progress& progress) {
+                 const Progress& progress, std::size_t* count_only) {
   // Reported every kReportEvery samples (a branch taken that rarely costs
   // nothing measurable in the loop), against the usual count at the radius.
   constexpr std::size_t kReportEvery = 256;
@@ -657,19 +662,24 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
   PointSet<D> points;
   std::conditional_t<(D <= 3), BridsonGrid<D, Periodic>, ConflictGrid<D>> grid(domain, radius, points);
   typename decltype(grid)::Placed placed{};  // the candidate is_free() last accepted, as a sample
-  points.reserve(static_cast<std::size_t>(0.75 * packing_count(sizing_volume(domain, radius), radius, D)) + 64);
-  detail::advise_huge_pages(points);
+  const bool keep = count_only == nullptr || D == 3;
+  if (keep) {
+    points.reserve(static_cast<std::size_t>(0.75 * packing_count(sizing_volume(domain, radius), radius, D)) + 64);
+    detail::advise_huge_pages(points);
+  }
   points.push_back(Point<D>{});
   points[0].fill(std::numeric_limits<double>::quiet_NaN());
+  std::size_t count = 0;  // samples placed
   // Files the candidate is_free() just accepted.
   const auto add = [&](std::size_t at) __attribute__((always_inline)) {
-    points.push_back(placed.point);
-    grid.insert(placed, at, points.size() - 1);
-    const std::size_t count = points.size() - 1;
+    if (keep) points.push_back(placed.point);
+    grid.insert(placed, at, ++count);
     if (count % kReportEvery == 0) reporter.update(static_cast<double>(count));
   };
   const auto finish = [&] {
     reporter.finish();
+    if (count_only) *count_only = count;
+    if (!keep) return PointSet<D>{};
     points.erase(points.begin());
     return std::move(points);
   };
@@ -792,12 +802,12 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
 
 template <int D>
 PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& params, std::uint64_t seed,
-                 const Progress& progress) {
+                 const Progress& progress, std::size_t* count_only = nullptr) {
   if (params.scipy)
-    return domain.periodic ? grow<D, true, true>(domain, radius, params, seed, progress)
-                           : grow<D, false, true>(domain, radius, params, seed, progress);
-  return domain.periodic ? grow<D, true, false>(domain, radius, params, seed, progress)
-                         : grow<D, false, false>(domain, radius, params, seed, progress);
+    return domain.periodic ? grow<D, true, true>(domain, radius, params, seed, progress, count_only)
+                           : grow<D, false, true>(domain, radius, params, seed, progress, count_only);
+  return domain.periodic ? grow<D, true, false>(domain, radius, params, seed, progress, count_only)
+                         : grow<D, false, false>(domain, radius, params, seed, progress, count_only);
 }
 
 // Count mode. A finished set at the radius holds more than the count; taking
@@ -809,31 +819,43 @@ PointSet<D> grow(const Domain<D>& domain, double radius, const BridsonParams& pa
 // one that does not, at most kCountSearchSteps sets; weighted sample
 // elimination (samplers/elimination.h) then removes the few extra from the
 // most crowded places. Every radius tried is at least params.radius, so the
-// minimum distance still holds; each set is grown from the same seed.
+// minimum distance still holds; each set is grown from the same seed, so a
+// set is the same whenever it is grown again. The first set (a quarter more
+// than the count, at the registry's radius) is only counted where the grid
+// allows (grow's count_only): held, it was the peak of the whole run. It is
+// grown again only if the search keeps it (rare: it already fits, or every
+// step failed).
 constexpr double kCountSurplus = 0.02;
 constexpr int kCountSearchSteps = 8;
 // Progress with a count: the first set, each radius of the search (the
-// steps not taken are skipped), the elimination.
-constexpr std::size_t kCountParts = kCountSearchSteps + 2;
+// steps not taken are skipped), the first set again where needed, the
+// elimination.
+constexpr std::size_t kCountParts = kCountSearchSteps + 3;
 
+// `points` is the set at params.radius, or empty when only its size
+// `first_size` was kept.
 template <int D>
-PointSet<D> trim_to_count(PointSet<D> points, std::uint64_t count, const Domain<D>& domain, const BridsonParams& params,
-                          std::uint64_t seed) {
+PointSet<D> trim_to_count(PointSet<D> points, std::size_t first_size, std::uint64_t count, const Domain<D>& domain,
+                          const BridsonParams& params, std::uint64_t seed) {
   const auto n = static_cast<double>(count);
   const double most = n * (1.0 + kCountSurplus);
   double holds = params.radius, fails = std::numeric_limits<double>::infinity();
-  for (int step = 0; step != kCountSearchSteps && static_cast<double>(points.size()) > most; ++step) {
+  std::size_t held = first_size;  // the size of the set at `holds`
+  for (int step = 0; step != kCountSearchSteps && static_cast<double>(held) > most; ++step) {
     // Aim at half the allowed surplus, inside the bracket.
-    double next = holds * std::pow(static_cast<double>(points.size()) / (n * (1.0 + kCountSurplus / 2)), 1.0 / D);
+    double next = holds * std::pow(static_cast<double>(held) / (n * (1.0 + kCountSurplus / 2)), 1.0 / D);
     if (!(next < fails)) next = std::sqrt(holds * fails);
     PointSet<D> grown = grow(domain, next, params, seed, part_of(params.progress, static_cast<std::size_t>(1 + step), kCountParts));
     if (grown.size() >= count) {
       holds = next;
+      held = grown.size();
       points = std::move(grown);
     } else {
       fails = next;
     }
   }
+  if (points.size() != held)  // the first set, only counted
+    points = grow(domain, holds, params, seed, part_of(params.progress, kCountParts - 2, kCountParts));
   return eliminate(std::move(points), count, domain, {}, /*progressive=*/false,
                    part_of(params.progress, kCountParts - 1, kCountParts));
 }
@@ -862,16 +884,15 @@ void validate(const BridsonParams& params, const Domain<D>& domain) {
 template <int D>
 PointSet<D> bridson(const BridsonParams& params, const Domain<D>& domain, std::uint64_t seed) {
   validate(params, domain);
-  PointSet<D> points =
-      grow(domain, params.radius, params, seed,
-           params.count ? part_of(params.progress, 0, kCountParts) : params.progress);
-  if (!params.count) return points;
-  if (points.size() < *params.count)
-    throw InvalidArgument("bridson: only " + std::to_string(points.size()) + " points fit at radius " +
+  if (!params.count) return grow(domain, params.radius, params, seed, params.progress);
+  std::size_t first_size = 0;
+  PointSet<D> points = grow(domain, params.radius, params, seed, part_of(params.progress, 0, kCountParts), &first_size);
+  if (first_size < *params.count)
+    throw InvalidArgument("bridson: only " + std::to_string(first_size) + " points fit at radius " +
                           detail::format_number(params.radius) + " (k " + std::to_string(params.k) +
                           "), fewer than the " + std::to_string(*params.count) +
                           " requested; ask for fewer points or a smaller radius");
-  return trim_to_count(std::move(points), *params.count, domain, params, seed);
+  return trim_to_count(std::move(points), first_size, *params.count, domain, params, seed);
 }
 
 #define PDS_INSTANTIATE(D) template PointSet<D> bridson<D>(const BridsonParams&, const Domain<D>&, std::uint64_t);

@@ -11,6 +11,7 @@
 #include "pds/analysis/spectrum.h"
 #include "pds/error.h"
 #include "pds/rng.h"
+#include "pds/samplers/elimination.h"
 #include "pds/samplers/sizing.h"
 #include "pds/registry.h"
 
@@ -136,6 +137,26 @@ TEST(Bridson, CountGivesExactlyThatMany) {
   const auto points = bridson(params, domain, 9);
   ASSERT_EQ(points.size(), 500u);
   expect_poisson_disk(points, domain, 0.03);
+}
+
+// With a count the first set is only counted (1D, 2D and 4D grids never read
+// the samples back) and grown again when the search keeps it: a count the
+// set at the radius already meets, or misses by less than the surplus, gives
+// that set, or its elimination, exactly as if it had been kept.
+template <int D>
+void expect_first_set_grown_again(const Domain<D>& domain, double radius) {
+  const PointSet<D> all = bridson<D>({.radius = radius}, domain, 3);
+  ASSERT_GT(all.size(), 100u);
+  EXPECT_EQ(bridson<D>({.radius = radius, .count = all.size()}, domain, 3), all);
+  const std::uint64_t fewer = all.size() - all.size() / 100;  // within the 2% surplus: no search
+  EXPECT_EQ(bridson<D>({.radius = radius, .count = fewer}, domain, 3), eliminate(all, fewer, domain, {}, false));
+}
+
+TEST(Bridson, CountKeepsTheFirstSetWhenItFits) {
+  expect_first_set_grown_again(Domain<1>::unit(true), 0.002);
+  expect_first_set_grown_again(Domain<2>::unit(false), 0.04);
+  expect_first_set_grown_again(Domain<3>::unit(true), 0.12);
+  expect_first_set_grown_again(Domain<4>::unit(false), 0.3);
 }
 
 // Mean radial power at frequencies up to half the inverse mean spacing, over
@@ -366,14 +387,14 @@ TEST(Bridson, CountReportsProgressThroughEveryStage) {
   const auto quiet = bridson(params, domain, 4);
   std::vector<double> done;
   params.progress.report = [&](double d, double total) {
-    EXPECT_EQ(total, 10.0);  // kCountParts
+    EXPECT_EQ(total, 11.0);  // kCountParts: the first set, 8 steps, the first set again, the elimination
     done.push_back(d);
     return true;
   };
   EXPECT_EQ(bridson(params, domain, 4), quiet);
   ASSERT_GE(done.size(), 10u);
   for (std::size_t i = 1; i < done.size(); ++i) EXPECT_GE(done[i], done[i - 1]) << i;
-  EXPECT_EQ(done.back(), 10.0);
+  EXPECT_EQ(done.back(), 11.0);
 }
 
 TEST(Bridson, BadParameters) {

@@ -45,7 +45,8 @@
 // for the last few percent; progressive order adds the same on N, N/2, ...
 // samples. Memory: the candidates, sorted in place when elimination() drew
 // them (eliminate() copies its caller's), an 8-byte weight and a 4-byte
-// original index each, the grid's cell starts (about 4 cells a candidate), and
+// original index each, the grid's cell starts (at most 4 cells a candidate, 1
+// in the first round from 2D), 8 bytes a candidate while the heap runs, and
 // in the progressive rounds a 4-byte rank and a 16-byte record a removal.
 
 #include "pds/samplers/elimination.h"
@@ -121,13 +122,14 @@ class CellIndex {
  public:
   /// Takes the points over and sorts them in place: no second copy of them
   /// (the 5N candidates are most of elimination's memory).
-  CellIndex(const Domain<D>& domain, PointSet<D>&& points, double reach)
+  CellIndex(const Domain<D>& domain, PointSet<D>&& points, double reach, double cells_per_point)
       : domain_(domain), reach_(reach), points_(std::move(points)) {
     // Cells of edge about reach / 2 (a window of 5 cells an axis) up to 3D,
     // reach beyond (3 an axis: 5^D cells would outnumber the points), fewer
-    // where the grid would outgrow the points (a thin axis, or a tiny set in
-    // a large domain).
-    const double max_cells = std::min<double>(kMaxGridCells, 4.0 * static_cast<double>(points_.size()) + 64.0);
+    // where the grid would outgrow cells_per_point a point (a thin axis, a
+    // tiny set in a large domain, or few candidates for the count).
+    const double max_cells =
+        std::min<double>(kMaxGridCells, cells_per_point * static_cast<double>(points_.size()) + 64.0);
     std::array<int, D> cells;
     double edge = D <= 3 ? reach / 2.0 : reach;
     while (true) {
@@ -159,14 +161,15 @@ class CellIndex {
       ++start_[c + 1];
     }
     for (std::size_t c = 0; c < hood_.size(); ++c) start_[c + 1] += start_[c];
-    {
-      std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-      original_.resize(n);
-      for (std::size_t k = 0; k < n; ++k) {
-        to[k] = fill[to[k]]++;
-        original_[to[k]] = static_cast<std::uint32_t>(k);
-      }
+    // start_[c] serves as cell c's next free place (no copy of the cell
+    // starts: as many as 4 a point), then goes back one cell.
+    original_.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      to[k] = start_[to[k]]++;
+      original_[to[k]] = static_cast<std::uint32_t>(k);
     }
+    for (std::size_t c = hood_.size(); c > 0; --c) start_[c] = start_[c - 1];
+    start_[0] = 0;
     // The permutation applied by its cycles: each swap puts one point in
     // its place.
     for (std::size_t k = 0; k < n; ++k)
@@ -203,6 +206,28 @@ class CellIndex {
   }
 
   std::uint32_t original(std::uint32_t k) const { return original_[k]; }
+
+  /// The points, in the order of their original indices; the index is spent.
+  /// Permuted in place (by cycles), not copied: the output would otherwise
+  /// sit beside the index's points at the end of the run.
+  PointSet<D> take_points_in_input_order() {
+    std::vector<std::uint32_t> by_input(points_.size());
+    for (std::uint32_t k = 0; k < by_input.size(); ++k) by_input[k] = k;
+    std::sort(by_input.begin(), by_input.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return original_[a] < original_[b]; });
+    std::vector<std::uint32_t>& to = original_;  // now each point's place
+    for (std::uint32_t i = 0; i < by_input.size(); ++i) to[by_input[i]] = i;
+    std::vector<std::uint32_t>().swap(by_input);
+    for (std::size_t k = 0; k < points_.size(); ++k)
+      while (to[k] != k) {
+        const std::uint32_t there = to[k];
+        std::swap(points_[k], points_[there]);
+        std::swap(to[k], to[there]);
+      }
+    std::vector<std::uint32_t>().swap(original_);
+    std::vector<std::uint32_t>().swap(start_);
+    return std::move(points_);
+  }
 
   /// Writes to out[0, n) every point k other than `self` closer than the
   /// reach to points_[self], with d2 = Domain::distance2(point k, p), in a
@@ -289,45 +314,39 @@ constexpr double kWeightUnit = 0x1.0p32;
 constexpr Weight kGone = std::numeric_limits<Weight>::max();
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-// A binary max-heap of (weight, index) with the position of each index, for
-// decrease-key. Larger weight first; equal weights, smaller index first.
+// A binary max-heap of indices into the caller's weights, with the position
+// of each index, for decrease-key: 8 bytes a candidate (with a copy of each
+// weight in its entry it took 20, beside the weights themselves). Larger
+// weight first; equal weights, smaller index first.
 class WeightHeap {
  public:
-  explicit WeightHeap(const std::vector<Weight>& weights) : heap_(weights.size()), position_(weights.size()) {
+  explicit WeightHeap(const std::vector<Weight>& weights)
+      : weights_(weights), heap_(weights.size()), position_(weights.size()) {
     for (std::size_t k = 0; k < weights.size(); ++k) {
-      heap_[k] = {weights[k], static_cast<std::uint32_t>(k)};
+      heap_[k] = static_cast<std::uint32_t>(k);
       position_[k] = static_cast<std::uint32_t>(k);
     }
     for (std::size_t at = heap_.size() / 2; at-- > 0;) sift_down(at);
   }
 
-  /// The top entry, removed.
+  /// The top entry, removed: its weight and index.
   std::pair<Weight, std::uint32_t> pop() {
-    const Entry top = heap_[0];
+    const std::uint32_t top = heap_[0];
     heap_[0] = heap_.back();
     heap_.pop_back();
     if (!heap_.empty()) {
-      position_[heap_[0].index] = 0;
+      position_[heap_[0]] = 0;
       sift_down(0);
     }
-    return {top.weight, top.index};
+    return {weights_[top], top};
   }
 
-  /// Lowers k's weight by `amount`.
-  void decrease(std::uint32_t k, Weight amount) {
-    const std::size_t at = position_[k];
-    heap_[at].weight -= amount;
-    sift_down(at);
-  }
+  /// Takes k's place again after the caller lowered its weight.
+  void lowered(std::uint32_t k) { sift_down(position_[k]); }
 
  private:
-  struct Entry {
-    Weight weight;
-    std::uint32_t index;
-  };
-  static bool above(const Entry& a, const Entry& b) {
-    return a.weight > b.weight || (a.weight == b.weight && a.index < b.index);
-  }
+  using Entry = std::uint32_t;
+  bool above(Entry a, Entry b) const { return weights_[a] > weights_[b] || (weights_[a] == weights_[b] && a < b); }
   void sift_down(std::size_t at) {
     const Entry moving = heap_[at];
     const std::size_t n = heap_.size();
@@ -337,13 +356,14 @@ class WeightHeap {
       if (child + 1 < n && above(heap_[child + 1], heap_[child])) ++child;
       if (!above(heap_[child], moving)) break;
       heap_[at] = heap_[child];
-      position_[heap_[at].index] = static_cast<std::uint32_t>(at);
+      position_[heap_[at]] = static_cast<std::uint32_t>(at);
       at = child;
     }
     heap_[at] = moving;
-    position_[moving.index] = static_cast<std::uint32_t>(at);
+    position_[moving] = static_cast<std::uint32_t>(at);
   }
 
+  const std::vector<Weight>& weights_;
   std::vector<Entry> heap_;
   std::vector<std::uint32_t> position_;
 };
@@ -374,12 +394,14 @@ class RoundEliminator {
  public:
   RoundEliminator(std::span<const Point<D>> points, std::span<const double> scale, const Domain<D>& domain,
                   double d_max, const WeightFunction& weight)
-      : RoundEliminator(PointSet<D>(points.begin(), points.end()), scale, domain, d_max, weight) {}
+      : RoundEliminator(PointSet<D>(points.begin(), points.end()), scale, domain, d_max, weight, 4.0) {}
 
-  /// Takes the points over (the index sorts them in place).
+  /// Takes the points over (the index sorts them in place). The index has at
+  /// most cells_per_point cells a point (CellIndex).
   RoundEliminator(PointSet<D>&& points, std::span<const double> scale, const Domain<D>& domain, double d_max,
-                  const WeightFunction& weight)
-      : index_(domain, std::move(points), d_max * (Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0)),
+                  const WeightFunction& weight, double cells_per_point)
+      : index_(domain, std::move(points), d_max * (Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0),
+               cells_per_point),
         weight_(weight),
         weights_(index_.size(), 0) {
     const std::size_t n = index_.size();
@@ -405,20 +427,15 @@ class RoundEliminator {
   /// indices, in the same order). The weights go first: the round is over.
   PointSet<D> take_survivors() {
     std::vector<Weight>().swap(weights_);
-    std::vector<std::uint32_t> by_input(index_.size());
-    for (std::uint32_t k = 0; k < by_input.size(); ++k) by_input[k] = k;
-    std::sort(by_input.begin(), by_input.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return index_.original(a) < index_.original(b); });
-    PointSet<D> out(by_input.size());
-    for (std::size_t i = 0; i < out.size(); ++i) out[i] = index_.point(by_input[i]);
-    return out;
+    return index_.take_points_in_input_order();
   }
 
   /// Eliminates down to `keep`. Returns indices into the points: the
   /// survivors first (in input order), then, if `ordered`, the eliminated, the
-  /// last eliminated first.
-  std::vector<std::uint32_t> run(std::size_t keep, bool ordered, bool by_heap, ProgressReporter& progress,
-                                 double done) {
+  /// last eliminated first; nothing if not `indices` (take_survivors() alone
+  /// is wanted: the list would sit beside the index at the run's peak).
+  std::vector<std::uint32_t> run(std::size_t keep, bool ordered, bool by_heap, ProgressReporter& progress, double done,
+                                 bool indices = true) {
     const std::size_t total = index_.size();
     // Only an ordered round keeps a record of each removal (16 bytes): the
     // first round of 5N candidates would hold 4N of them for nothing.
@@ -449,6 +466,7 @@ class RoundEliminator {
       compact();
     }
     std::vector<std::uint32_t> order;
+    if (!indices) return order;
     order.reserve(ordered ? total : keep);
     for (std::uint32_t k = 0; k < index_.size(); ++k) order.push_back(index_.original(k));
     std::sort(order.begin(), order.end());
@@ -532,7 +550,7 @@ class RoundEliminator {
         if (weights_[m.index] != kGone) {
           const Weight q = term(gone, m.index, m.d2);
           weights_[m.index] -= q;
-          heap.decrease(m.index, q);
+          heap.lowered(m.index);
         }
     }
     compact();
@@ -702,8 +720,14 @@ PointSet<D> eliminate_consuming(PointSet<D>&& candidates, std::span<const double
   PointSet<D> survivors;
   std::vector<std::uint32_t> kept;
   const auto first_round = [&]<bool Scaled>() {
-    RoundEliminator<D, Scaled> round(std::move(candidates), scale, domain, d_max, first);
-    kept = round.run(count, /*ordered=*/false, /*by_heap=*/false, reporter, 0.0);
+    // From 2D, one cell a candidate at most: with few candidates for the
+    // count (Bridson's count path removes about 1%) the cells of edge
+    // d_max / 2 outnumber them 3.5 to 1, and their starts were the largest
+    // array after the points. From 5N candidates the limit does not bind. (In
+    // 1D, where the output is small, the cells stay as they were: ties of
+    // weight are common there, broken by the cells' order.)
+    RoundEliminator<D, Scaled> round(std::move(candidates), scale, domain, d_max, first, D >= 2 ? 1.0 : 4.0);
+    kept = round.run(count, /*ordered=*/false, /*by_heap=*/false, reporter, 0.0, /*indices=*/progressive);
     survivors = round.take_survivors();
   };
   if (scale.empty())
@@ -1017,20 +1041,20 @@ PointSet<D> elimination(const EliminationParams& params, const SamplingConstrain
                                 params.progress);
 }
 
-#define PDS_INSTANTIATE(D)                                                                                          \
-  template PointSet<D> elimination<D>(const EliminationParams&, const SamplingConstraints<D>&, const Domain<D>&,    \
-                                      std::uint64_t);                                                               \
-  template std::vector<std::uint32_t> detail::eliminate_indices<D>(                                                 \
-      std::span<const Point<D>>, std::span<const double>, std::size_t, const Domain<D>&, double,                    \
-      const EliminationWeights&, bool, int, const Progress&);                                                       \
-  template std::vector<std::uint32_t> detail::eliminate_indices_by_heap<D>(                                         \
-      std::span<const Point<D>>, std::span<const double>, std::size_t, const Domain<D>&, double,                    \
-      const EliminationWeights&, bool, int);                                                                        \
-  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                   \
-  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&, \
-                                    bool, const Progress&);                                                         \
-  template PointSet<D> eliminate<D>(PointSet<D>&&, std::uint64_t, const Domain<D>&, const EliminationWeights&,      \
-                                    bool, const Progress&);
+#define PDS_INSTANTIATE(D)                                                                                           \
+  template PointSet<D> elimination<D>(const EliminationParams&, const SamplingConstraints<D>&, const Domain<D>&,     \
+                                      std::uint64_t);                                                                \
+  template std::vector<std::uint32_t> detail::eliminate_indices<D>(                                                  \
+      std::span<const Point<D>>, std::span<const double>, std::size_t, const Domain<D>&, double,                     \
+      const EliminationWeights&, bool, int, const Progress&);                                                        \
+  template std::vector<std::uint32_t> detail::eliminate_indices_by_heap<D>(                                          \
+      std::span<const Point<D>>, std::span<const double>, std::size_t, const Domain<D>&, double,                     \
+      const EliminationWeights&, bool, int);                                                                         \
+  template PointSet<D> elimination<D>(const EliminationParams&, const Domain<D>&, std::uint64_t);                    \
+  template PointSet<D> eliminate<D>(const PointSet<D>&, std::uint64_t, const Domain<D>&, const EliminationWeights&,  \
+                                    bool, const Progress&);                                                          \
+  template PointSet<D> eliminate<D>(PointSet<D>&&, std::uint64_t, const Domain<D>&, const EliminationWeights&, bool, \
+                                    const Progress&);
 PDS_FOR_EACH_DIM(PDS_INSTANTIATE)
 #undef PDS_INSTANTIATE
 
