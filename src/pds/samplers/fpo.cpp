@@ -100,9 +100,10 @@ class Optimizer {
   std::size_t sweep(ProgressReporter& progress, double done) {
     std::size_t moved = 0;
     std::vector<std::uint32_t> neighbours;
-    for (std::size_t k = 0; k < visit_order_.size(); ++k) {
+    const auto n = static_cast<std::uint32_t>(points_.size());
+    for (std::uint32_t k = 0; k < n; ++k) {
       progress.update(done + static_cast<double>(k));
-      moved += move(visit_order_[k], neighbours);
+      moved += move(k, neighbours);
     }
     return moved;
   }
@@ -112,7 +113,7 @@ class Optimizer {
     FpoSweep s;
     double min2 = std::numeric_limits<double>::infinity(), sum = 0.0;
     std::vector<std::uint32_t> neighbours;
-    for (std::uint32_t i : visit_order_) {
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
       const double nn2 = nearest2(i, neighbours);
       min2 = std::min(min2, nn2);
       sum += std::sqrt(nn2);
@@ -122,7 +123,14 @@ class Optimizer {
     return s;
   }
 
-  const PointSet<2>& points() const { return points_; }
+  std::size_t size() const { return points_.size(); }
+
+  /// The points in the caller's order.
+  PointSet<2> points() const {
+    PointSet<2> out(points_.size());
+    for (std::size_t k = 0; k < points_.size(); ++k) out[caller_index_[k]] = points_[k];
+    return out;
+  }
 
  protected:
   /// Where a removed point may go: `centre` (in the domain), its squared
@@ -150,21 +158,27 @@ class Optimizer {
     // move little, so a point's triangulation is mostly still in cache from
     // its predecessor's move. With the insertion order (the triangulation's
     // records then lie in memory roughly in the order of space), a sweep at
-    // 10^5 points went from 0.9 to 0.2 s.
+    // 10^5 points went from 0.9 to 0.2 s. The points are renumbered along
+    // that curve, so that a neighbour's coordinates are near in memory too.
     //
     // Both sorts split at medians down to single points (threshold 1), by a
     // strict order (IndexOrder): so the orders do not depend on how the
     // standard library's nth_element arranges ties or small groups.
     const IndexOrder by_location{&points_};
-    visit_order_.resize(points_.size());
-    std::iota(visit_order_.begin(), visit_order_.end(), 0u);
-    std::vector<std::uint32_t> order = visit_order_;
+    caller_index_.resize(points_.size());
+    std::iota(caller_index_.begin(), caller_index_.end(), 0u);
+    std::vector<std::uint32_t> order = caller_index_;
     CGAL::spatial_sort(order.begin(), order.end(), by_location, CGAL::Hilbert_sort_median_policy(),
                        /*threshold_hilbert=*/1);
-    Face hint;
-    for (std::uint32_t i : order) hint = insert(i, hint)->face();
     const CGAL::Hilbert_sort_2<IndexOrder, CGAL::Hilbert_sort_median_policy> along_one_curve(by_location, 1);
-    along_one_curve(visit_order_.begin(), visit_order_.end());
+    along_one_curve(caller_index_.begin(), caller_index_.end());
+    std::vector<std::uint32_t> own_index(points_.size());
+    for (std::uint32_t k = 0; k < caller_index_.size(); ++k) {
+      own_index[caller_index_[k]] = k;
+      points_[k] = start[caller_index_[k]];
+    }
+    Face hint;
+    for (std::uint32_t i : order) hint = insert(own_index[i], hint)->face();
   }
 
   // The traits CGAL's spatial sorts ask for, on point indices: a coordinate,
@@ -239,7 +253,9 @@ class Optimizer {
   PointSet<2> points_;
   Triangulation dt_;
   std::vector<Vertex> handles_;
-  std::vector<std::uint32_t> visit_order_;
+  // caller_index_[k]: the caller's index of our point k (points are
+  // numbered along the sweep's Hilbert curve).
+  std::vector<std::uint32_t> caller_index_;
 };
 
 // The square torus: CGAL's periodic triangulation, each point stored once.
@@ -261,15 +277,44 @@ class TorusOptimizer : public Optimizer<TorusOptimizer, PeriodicDelaunay> {
     while (++n != done);
   }
 
+  // The faces already looked at in one search: a face of the hole is a face
+  // of three neighbours, one of the ring of two, so a third of the faces and
+  // more came twice or three times (the same arithmetic each time: skipping
+  // them changes no result). A small open-addressed set of face addresses,
+  // made for each search; past kMostFaces faces (a point of very high degree)
+  // it stops recording and faces are looked at again, as before.
+  class SeenFaces {
+   public:
+    /// False the first time f is offered, true after (while recording).
+    bool seen(Face f) {
+      const auto key = reinterpret_cast<std::uintptr_t>(&*f);
+      std::size_t slot = (key >> 6) & (kSlots - 1);
+      for (; slots_[slot] != 0; slot = (slot + 1) & (kSlots - 1))
+        if (slots_[slot] == key) return true;
+      if (used_ < kMostFaces) {
+        slots_[slot] = key;
+        ++used_;
+      }
+      return false;
+    }
+
+   private:
+    static constexpr std::size_t kSlots = 128, kMostFaces = kSlots / 2;  // a hole's faces are about 20
+    std::array<std::uintptr_t, kSlots> slots_{};
+    std::size_t used_ = 0;
+  };
+
   // The largest circumcircle among the faces around the former neighbours,
   // its centre computed relative to the face's vertex 0 from the faces'
   // periodic offsets, then wrapped into the domain.
   Centre best_centre(std::uint32_t i, const std::vector<std::uint32_t>& neighbours) const {
     Centre best;
+    SeenFaces faces;
     for (std::uint32_t j : neighbours) {
       if (j == i) continue;  // a periodic copy of x itself, on a sparse torus
       auto f = dt_.incident_faces(handles_[j]), done = f;
       do {
+        if (faces.seen(f)) continue;
         const auto [p0, o0] = dt_.periodic_point(f, 0);
         double e[2][2];
         for (int s = 1; s <= 2; ++s) {
@@ -467,7 +512,7 @@ FpoResult optimize(Sweeper& optimizer, const FpoParams& params) {
   result.sweeps.push_back(optimizer.measure());
   // Point visits out of the sweep budget: a run that converges early ends
   // with a jump to the total.
-  const auto n = static_cast<double>(optimizer.points().size());
+  const auto n = static_cast<double>(optimizer.size());
   ProgressReporter progress(params.progress, n * params.sweeps);
   for (int s = 0; s < params.sweeps; ++s) {
     const std::size_t moved = optimizer.sweep(progress, n * s);

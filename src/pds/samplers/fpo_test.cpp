@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "pds/analysis/distance.h"
@@ -45,6 +46,32 @@ TEST_P(FpoDomains, MinimumDistanceNeverDecreasesAcrossSweeps) {
 
 INSTANTIATE_TEST_SUITE_P(TorusAndBox, FpoDomains, ::testing::Bool(),
                          [](const auto& info) { return info.param ? "torus" : "box"; });
+
+// A point of very high degree on a torus (the hub of a ring of 150 points):
+// the search around its hole looks at more faces than the optimizer records
+// as seen (it then looks at the rest again), and the promises still hold.
+TEST(Fpo, HubOfManyNeighboursOnATorus) {
+  const Domain<2> torus = Domain<2>::unit(true);
+  PointSet<2> points = white_noise<2>({.count = 400}, torus, 5);
+  std::erase_if(points, [](const Point<2>& p) { return std::hypot(p[0] - 0.5, p[1] - 0.5) < 0.15; });
+  points.push_back({0.5, 0.5});
+  for (int k = 0; k < 150; ++k) {
+    const double a = 2.0 * M_PI * k / 150.0;
+    points.push_back({0.5 + 0.1 * std::cos(a), 0.5 + 0.1 * std::sin(a)});
+  }
+  double last = min_distance_brute_force(points, torus).distance;
+  for (int sweep = 0; sweep < 3; ++sweep) {
+    const FpoResult r = fpo_optimize(points, torus, {.sweeps = 1, .tolerance = 0});
+    ASSERT_EQ(r.points.size(), points.size());
+    for (const auto& p : r.points) ASSERT_TRUE(torus.contains(p)) << p;
+    const double now = min_distance_brute_force(r.points, torus).distance;
+    EXPECT_GE(now, last) << "sweep " << sweep;
+    EXPECT_EQ(r.sweeps[1].min_distance, now);
+    last = now;
+    points = r.points;
+  }
+  EXPECT_GT(last, 0.01);  // the ring's neighbours, 0.0042 apart, moved apart
+}
 
 // In a box the farthest point from the others may lie on a side or at a
 // corner: two points end at opposite corners (the one at hi just inside).
