@@ -50,4 +50,33 @@ class BlockVector {
   std::size_t released_ = 0;  // blocks before this one are freed
 };
 
+/// A BlockVector of Wide values kept as Narrow ones when its owner knows they
+/// fit (said once, at construction; a value is cast, not checked): ebeida's
+/// sub-cell codes are 128-bit in general, and under 64 bits at every level
+/// that a run reaches in practice, where they are the largest array.
+template <class Wide, class Narrow, unsigned Shift = 16>
+class NarrowableBlockVector {
+ public:
+  explicit NarrowableBlockVector(bool narrow = true) : narrow_(narrow) {}
+
+  void push_back(const Wide& value) {
+    if (narrow_)
+      narrow_values_.push_back(static_cast<Narrow>(value));
+    else
+      wide_values_.push_back(value);
+  }
+  Wide operator[](std::size_t i) const { return narrow_ ? static_cast<Wide>(narrow_values_[i]) : wide_values_[i]; }
+  std::size_t size() const { return narrow_ ? narrow_values_.size() : wide_values_.size(); }
+  /// BlockVector::release_before.
+  void release_before(std::size_t i) {
+    narrow_values_.release_before(i);
+    wide_values_.release_before(i);
+  }
+
+ private:
+  bool narrow_;
+  BlockVector<Narrow, Shift> narrow_values_;
+  BlockVector<Wide, Shift> wide_values_;
+};
+
 }  // namespace pds::detail

@@ -44,5 +44,27 @@ TEST(BlockVector, ReleasedBlocksLeaveTheRestReadable) {
   EXPECT_EQ(v.size(), 65u);
 }
 
+// Narrow: the values as the narrow type (a cast); wide: as they are. Both
+// read back as the wide type, release blocks alike, and grow past a block.
+TEST(NarrowableBlockVector, KeepsValuesInEitherWidth) {
+  NarrowableBlockVector<std::uint64_t, std::uint16_t, 4> narrow(true), wide(false);
+  for (std::uint64_t i = 0; i < 100; ++i) {
+    narrow.push_back(1000 + i);
+    wide.push_back((i << 40) + i);  // would not survive 16 bits
+  }
+  ASSERT_EQ(narrow.size(), 100u);
+  ASSERT_EQ(wide.size(), 100u);
+  for (std::uint64_t i = 0; i < 100; ++i) {
+    EXPECT_EQ(narrow[i], 1000 + i);
+    EXPECT_EQ(wide[i], (i << 40) + i);
+  }
+  narrow.release_before(40);
+  wide.release_before(40);
+  for (std::uint64_t i = 32; i < 100; ++i) {
+    EXPECT_EQ(narrow[i], 1000 + i);
+    EXPECT_EQ(wide[i], (i << 40) + i);
+  }
+}
+
 }  // namespace
 }  // namespace pds::detail
