@@ -160,7 +160,7 @@ const Method& maximal_darts_method() {
               {3, true, 0.08, 0.78, 0.83}},
       // scripts/peak_memory.py at 10^6: growth 2.8 times the output (the grid,
       // the samples and the open sub-cells of the first refinement levels),
-      // 2.3 over the estimate's typical count; in 3D 3.5 over it.
+      // 2.4 over the estimate's typical count; in 3D 3.5 over it.
       .memory_ratio = 3.5,
       .memory_ratio_from_dim = {{3, 5}},
       .run =

@@ -170,14 +170,7 @@ class CellIndex {
     }
     for (std::size_t c = hood_.size(); c > 0; --c) start_[c] = start_[c - 1];
     start_[0] = 0;
-    // The permutation applied by its cycles: each swap puts one point in
-    // its place.
-    for (std::size_t k = 0; k < n; ++k)
-      while (to[k] != k) {
-        const std::uint32_t there = to[k];
-        std::swap(points_[k], points_[there]);
-        std::swap(to[k], to[there]);
-      }
+    move_points_to(to);
   }
 
   std::size_t size() const { return points_.size(); }
@@ -218,12 +211,7 @@ class CellIndex {
     std::vector<std::uint32_t>& to = original_;  // now each point's place
     for (std::uint32_t i = 0; i < by_input.size(); ++i) to[by_input[i]] = i;
     std::vector<std::uint32_t>().swap(by_input);
-    for (std::size_t k = 0; k < points_.size(); ++k)
-      while (to[k] != k) {
-        const std::uint32_t there = to[k];
-        std::swap(points_[k], points_[there]);
-        std::swap(to[k], to[there]);
-      }
+    move_points_to(to);
     std::vector<std::uint32_t>().swap(original_);
     std::vector<std::uint32_t>().swap(start_);
     return std::move(points_);
@@ -284,6 +272,17 @@ class CellIndex {
   }
 
  private:
+  // Moves point k to to[k] (a permutation, spent on the way), by its cycles:
+  // each swap puts one point in its place.
+  void move_points_to(std::vector<std::uint32_t>& to) {
+    for (std::size_t k = 0; k < points_.size(); ++k)
+      while (to[k] != k) {
+        const std::uint32_t there = to[k];
+        std::swap(points_[k], points_[there]);
+        std::swap(to[k], to[there]);
+      }
+  }
+
   // A window less than half the cells wide along every axis of a torus (any
   // window in a box).
   bool narrow(const typename GridNeighbourhood<D>::Window& window) const {
