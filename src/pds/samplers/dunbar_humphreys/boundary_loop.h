@@ -271,6 +271,7 @@ template <class Kernel>
   // Boundary sampling makes about 0.875 samples per r^2 (rho ~ 0.87); reserving
   // that avoids the doubling that would otherwise set the peak memory.
   points.reserve(static_cast<std::size_t>(0.9 * domain.volume() / r2) + 16);
+  advise_huge_pages(points);
   Rng rng(seed);
   append_sample(points, grid, uniform_point(rng, domain));
   if (domain.periodic) {

@@ -16,6 +16,7 @@
 #include "pds/error.h"
 #include "pds/grid_neighbourhood.h"
 #include "pds/point.h"
+#include "../mapped_pages.h"
 
 namespace pds::detail::dh {
 
@@ -43,7 +44,10 @@ class CellGrid {
     if (static_cast<double>(n[0]) * n[1] > static_cast<double>(std::size_t{1} << 31))
       throw InvalidArgument("dunbar-humphreys: radius too small for the domain (grid above 2^31 cells)");
     neighbourhood_ = GridNeighbourhood<2>(domain, n);
-    cells_.assign(neighbourhood_.size(), -1);
+    // In huge pages where offered: the fill touches every cell, and at 10^6
+    // samples (9 MB) its 4 KiB page faults were a sixth of the run.
+    cells_ = map_zeroed<std::int32_t>(neighbourhood_.size(), Pages::kHuge);
+    std::fill_n(cells_.get(), neighbourhood_.size(), -1);
   }
   int n(int axis) const { return neighbourhood_.cells(axis); }
   /// How many cells around a sample's cell can hold a sample within
@@ -79,7 +83,7 @@ class CellGrid {
     });
   }
 
-  std::size_t bytes() const { return cells_.size() * sizeof(std::int32_t); }
+  std::size_t bytes() const { return neighbourhood_.size() * sizeof(std::int32_t); }
   /// Asks for the rows of p's window to be brought into the cache.
   void prefetch_window(const Point<2>& p, Reach reach) const {
     const Window w = window(p, reach);
@@ -124,13 +128,13 @@ class CellGrid {
   /// Row y of the grid, y in [0, 2n) (a torus window runs past the end).
   const std::int32_t* row(int y) const {
     const int n = this->n(1);
-    return cells_.data() + static_cast<std::size_t>(y >= n ? y - n : y) * this->n(0);
+    return cells_.get() + static_cast<std::size_t>(y >= n ? y - n : y) * this->n(0);
   }
 
   Domain<2> domain_;
   GridNeighbourhood<2> neighbourhood_;
   double inv_edge_[2];
-  std::vector<std::int32_t> cells_;
+  MappedArray<std::int32_t> cells_;
 };
 
 /// Appends q to the samples and records it in its grid cell; returns its index.
