@@ -277,7 +277,12 @@ std::size_t cloud_doubles(const std::string& method, std::uint64_t count, int di
 template <class Fill>
 PointCloud fill_cloud(const std::string& method, std::uint64_t count, const CloudBox& box, Fill&& fill) {
   PointCloud cloud{box.dim(), {}};
-  cloud.coords.resize(cloud_doubles(method, count, box.dim()));
+  // In huge pages where offered: at 10^6 points the 4 KiB page faults of
+  // the block were about half the run.
+  const std::size_t doubles = cloud_doubles(method, count, box.dim());
+  cloud.coords.reserve(doubles);
+  detail::advise_huge_pages(cloud.coords.data(), doubles * sizeof(double));
+  cloud.coords.resize(doubles);
   fill(cloud.coords.data());
   return cloud;
 }

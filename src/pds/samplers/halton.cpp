@@ -27,6 +27,7 @@
 
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
+#include "mapped_pages.h"
 
 namespace pds {
 
@@ -49,7 +50,7 @@ PointCloud halton(const HaltonParams& params, const CloudBox& box, std::uint64_t
 template <int D>
 PointSet<D> halton(const HaltonParams& params, const Domain<D>& domain, std::uint64_t seed) {
   require_index_range("halton", params.first, params.count);
-  PointSet<D> points(params.count);
+  PointSet<D> points = detail::output_points<D>(params.count);
   halton_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }

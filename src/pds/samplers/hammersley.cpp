@@ -17,6 +17,7 @@
 
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
+#include "mapped_pages.h"
 
 namespace pds {
 
@@ -49,7 +50,7 @@ PointCloud hammersley(const HammersleyParams& params, const CloudBox& box, std::
 template <int D>
 PointSet<D> hammersley(const HammersleyParams& params, const Domain<D>& domain, std::uint64_t seed) {
   require_index_range("hammersley", params.first, params.count);
-  PointSet<D> points(params.count);
+  PointSet<D> points = detail::output_points<D>(params.count);
   hammersley_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }

@@ -6,6 +6,7 @@
 #include "pds/error.h"
 #include "pds/rng.h"
 #include "pds/samplers/strata.h"
+#include "mapped_pages.h"
 
 namespace pds {
 
@@ -19,7 +20,7 @@ PointSet<D> jittered(const JitteredParams& params, const Domain<D>& domain, std:
     total *= static_cast<std::size_t>(params.cells[i]);
   }
   Rng rng(seed);
-  PointSet<D> points(total);
+  PointSet<D> points = detail::output_points<D>(total);
   std::array<int, D> index{};
   ProgressReporter progress(params.progress, static_cast<double>(total));
   for (std::size_t k = 0; k < points.size(); ++k) {

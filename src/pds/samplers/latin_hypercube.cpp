@@ -23,6 +23,7 @@
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/samplers/low_discrepancy.h"
+#include "mapped_pages.h"
 
 namespace pds {
 
@@ -68,7 +69,7 @@ template <int D>
 PointSet<D> latin_hypercube(const LatinHypercubeParams& params, const Domain<D>& domain, std::uint64_t seed) {
   if (params.count < 1 || params.count > (std::uint64_t{1} << 32))
     throw InvalidArgument("latin-hypercube: count must be in [1, 2^32], got " + std::to_string(params.count));
-  PointSet<D> points(params.count);
+  PointSet<D> points = detail::output_points<D>(params.count);
   latin_hypercube_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }

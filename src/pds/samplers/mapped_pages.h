@@ -74,4 +74,17 @@ void advise_huge_pages(Vector& v) noexcept {
   advise_huge_pages(v.data(), v.capacity() * sizeof(typename Vector::value_type));
 }
 
+/// `count` points (zeros) in huge pages where offered, for the outputs that
+/// a sampler fills in one pass: at 10^6 in 2D their 4 KiB page faults were
+/// about half the run of the plain patterns (random, the sequences, the
+/// grids).
+template <int D>
+PointSet<D> output_points(std::size_t count) {
+  PointSet<D> points;
+  points.reserve(count);
+  advise_huge_pages(points);
+  points.resize(count);
+  return points;
+}
+
 }  // namespace pds::detail

@@ -29,6 +29,7 @@
 #include "pds/samplers/latin_hypercube.h"
 #include "pds/samplers/low_discrepancy.h"
 #include "pds/samplers/strata.h"
+#include "mapped_pages.h"
 
 namespace pds {
 
@@ -60,7 +61,7 @@ PointSet<D> multi_jittered(const MultiJitteredParams& params, const Domain<D>& d
   }
   const SlabJitter within(n);
   const UnitCubeMap<D> to_domain(domain);
-  PointSet<D> points(n);
+  PointSet<D> points = detail::output_points<D>(n);
   std::array<std::uint32_t, D> cell{};
   ProgressReporter progress(params.progress, static_cast<double>(n));
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -2,6 +2,7 @@
 // stream, point after point; one code path for every dimension.
 #include "pds/samplers/random.h"
 #include "pds/detail/instantiate.h"
+#include "mapped_pages.h"
 
 namespace pds {
 
@@ -22,7 +23,7 @@ PointCloud white_noise(const WhiteNoiseParams& params, const CloudBox& box, std:
 
 template <int D>
 PointSet<D> white_noise(const WhiteNoiseParams& params, const Domain<D>& domain, std::uint64_t seed) {
-  PointSet<D> points(params.count);
+  PointSet<D> points = detail::output_points<D>(params.count);
   white_noise_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }

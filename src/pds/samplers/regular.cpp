@@ -5,6 +5,7 @@
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/samplers/strata.h"
+#include "mapped_pages.h"
 
 namespace pds {
 
@@ -17,7 +18,7 @@ PointSet<D> regular(const RegularParams& params, const Domain<D>& domain) {
                             std::to_string(params.cells[i]));
     total *= static_cast<std::size_t>(params.cells[i]);
   }
-  PointSet<D> points(total);
+  PointSet<D> points = detail::output_points<D>(total);
   std::array<int, D> index{};
   ProgressReporter progress(params.progress, static_cast<double>(total));
   for (std::size_t k = 0; k < points.size(); ++k) {

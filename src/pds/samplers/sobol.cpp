@@ -38,6 +38,7 @@
 
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
+#include "mapped_pages.h"
 
 namespace pds {
 namespace detail {
@@ -247,6 +248,7 @@ PointCloud sobol(const SobolParams& params, const CloudBox& box, std::uint64_t s
   const std::uint64_t block = std::max<std::uint64_t>(1, 32768 / static_cast<std::uint64_t>(box.dim()));
   std::vector<double> stage(static_cast<std::size_t>(std::min(block, params.count)) * static_cast<std::size_t>(box.dim()));
   cloud.coords.reserve(total);
+  detail::advise_huge_pages(cloud.coords);
   for (std::uint64_t done = 0; done < params.count;) {
     const std::uint64_t now = std::min(block, params.count - done);
     walk.fill(now, stage.data());
@@ -261,7 +263,7 @@ PointCloud sobol(const SobolParams& params, const CloudBox& box, std::uint64_t s
 template <int D>
 PointSet<D> sobol(const SobolParams& params, const Domain<D>& domain, std::uint64_t seed) {
   require_index_range("sobol", params.first, params.count);
-  PointSet<D> points(params.count);
+  PointSet<D> points = detail::output_points<D>(params.count);
   sobol_fill(params, CloudBox::of(domain), seed, points.data()->data());
   return points;
 }
