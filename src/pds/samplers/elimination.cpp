@@ -60,6 +60,7 @@
 #include <utility>
 
 #include "elimination_detail.h"
+#include "mapped_pages.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/detail/format.h"
 #include "pds/detail/instantiate.h"
@@ -149,8 +150,8 @@ class CellIndex {
     // Counting sort by cell, stable: ties keep the input order. `to[k]` is
     // first point k's cell, then its place in the sorted order.
     const std::size_t n = points_.size();
-    std::vector<std::uint32_t> to(n);
-    start_.assign(hood_.size() + 1, 0);
+    std::vector<std::uint32_t> to = detail::vector_in_huge_pages<std::uint32_t>(n);
+    start_ = detail::vector_in_huge_pages<std::uint32_t>(hood_.size() + 1);
     for (std::size_t k = 0; k < n; ++k) {
       std::size_t c = 0;
       for (int i = 0; i < D; ++i) {
@@ -163,7 +164,7 @@ class CellIndex {
     for (std::size_t c = 0; c < hood_.size(); ++c) start_[c + 1] += start_[c];
     // start_[c] serves as cell c's next free place (no copy of the cell
     // starts: as many as 4 a point), then goes back one cell.
-    original_.resize(n);
+    original_ = detail::vector_in_huge_pages<std::uint32_t>(n);
     for (std::size_t k = 0; k < n; ++k) {
       to[k] = start_[to[k]]++;
       original_[to[k]] = static_cast<std::uint32_t>(k);
@@ -320,7 +321,9 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 class WeightHeap {
  public:
   explicit WeightHeap(const std::vector<Weight>& weights)
-      : weights_(weights), heap_(weights.size()), position_(weights.size()) {
+      : weights_(weights),
+        heap_(detail::vector_in_huge_pages<Entry>(weights.size())),
+        position_(detail::vector_in_huge_pages<std::uint32_t>(weights.size())) {
     for (std::size_t k = 0; k < weights.size(); ++k) {
       heap_[k] = static_cast<std::uint32_t>(k);
       position_[k] = static_cast<std::uint32_t>(k);
@@ -402,7 +405,7 @@ class RoundEliminator {
       : index_(domain, std::move(points), d_max * (Scaled ? *std::max_element(scale.begin(), scale.end()) : 1.0),
                cells_per_point),
         weight_(weight),
-        weights_(index_.size(), 0) {
+        weights_(detail::vector_in_huge_pages<Weight>(index_.size())) {
     const std::size_t n = index_.size();
     if constexpr (Scaled) {
       scale_.resize(n);
@@ -961,7 +964,7 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   if (!(params.min_rho >= 0.0 && params.min_rho <= 0.8))
     throw InvalidArgument("elimination: min_rho must be in [0, 0.8], got " + detail::format_number(params.min_rho));
   Rng rng(seed);
-  PointSet<D> candidates(static_cast<std::size_t>(m));
+  PointSet<D> candidates = detail::output_points<D>(static_cast<std::size_t>(m));
   for (Point<D>& p : candidates) p = uniform_point(rng, domain);
   PointSet<D> kept =
       eliminate(std::move(candidates), params.count, domain, params.weights, params.progressive, params.progress);

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <vector>
 
 #include "pds/point.h"
 
@@ -74,17 +75,23 @@ void advise_huge_pages(Vector& v) noexcept {
   advise_huge_pages(v.data(), v.capacity() * sizeof(typename Vector::value_type));
 }
 
-/// `count` points (zeros) in huge pages where offered, for the outputs that
-/// a sampler fills in one pass: at 10^6 in 2D their 4 KiB page faults were
-/// about half the run of the plain patterns (random, the sequences, the
-/// grids).
+/// `count` copies of `value` in huge pages where offered, for the large
+/// arrays that a sampler writes through at once: at 10^6 in 2D their 4 KiB
+/// page faults were about half the run of the plain patterns (random, the
+/// sequences, the grids) and 7% of elimination's.
+template <class T>
+std::vector<T> vector_in_huge_pages(std::size_t count, const T& value = T{}) {
+  std::vector<T> v;
+  v.reserve(count);
+  advise_huge_pages(v);
+  v.assign(count, value);
+  return v;
+}
+
+/// `count` points (zeros), as above: the outputs filled in one pass.
 template <int D>
 PointSet<D> output_points(std::size_t count) {
-  PointSet<D> points;
-  points.reserve(count);
-  advise_huge_pages(points);
-  points.resize(count);
-  return points;
+  return vector_in_huge_pages<Point<D>>(count);
 }
 
 }  // namespace pds::detail
