@@ -201,12 +201,15 @@ def main():
             if c["name"].startswith("thinks v0.3"):
                 for j, d in enumerate(cfgs):
                     if d["name"] == "pds bridson k=30" and d["domain"] == "box" and d["dim"] == c["dim"] and d["radius"] == c["radius"]:
+                        rc = None  # the C header's runs, when --only kept them
                         for k, e in enumerate(cfgs):
                             if e["name"].startswith("thinks C") and e["dim"] == c["dim"] and e["radius"] == c["radius"]:
                                 rc = [(d2["n"] / d2["cpu"]) / (e2["n"] / e2["cpu"]) for d2, e2 in zip(res[j], res[k])]
                         r = [(d2["n"] / d2["cpu"]) / (c2["n"] / c2["cpu"]) for d2, c2 in zip(res[j], res[i])]
-                        print(f'  {c["dim"]}D ~{res[j][0]["n"]:,}: vs v0.3 {statistics.median(r):.2f} ({min(r):.2f}-{max(r):.2f}); '
-                              f'vs C header {statistics.median(rc):.2f} ({min(rc):.2f}-{max(rc):.2f})')
+                        line = f'  {c["dim"]}D ~{res[j][0]["n"]:,}: vs v0.3 {statistics.median(r):.2f} ({min(r):.2f}-{max(r):.2f})'
+                        if rc:
+                            line += f'; vs C header {statistics.median(rc):.2f} ({min(rc):.2f}-{max(rc):.2f})'
+                        print(line)
 
 
 if __name__ == "__main__":
