@@ -72,7 +72,7 @@ namespace {
 // less its delay (detail::quadtree_axis_delays; none but on thin axes), each
 // after the bits of the axes before it.
 using Code = u128;
-using SubCellCodes = detail::NarrowableBlockVector<Code, std::uint64_t>;
+using SubCellCodes = detail::NarrowableBlockVector<Code, std::uint32_t>;
 // Deepest level: 63 in 2D, 41 in 3D (codes of up to 126 bits), sub-cells of edge below 1e-12 r,
 // the slack of the coverage test. A Voronoi vertex of the samples at distance r - delta from
 // them needs sub-cells of diagonal below delta to close: about log2(r / delta) levels (15 are
@@ -348,13 +348,13 @@ class EbeidaSampler {
   /// level now starting (halves along the axes whose delay is over; one
   /// along the others), keeping the children that no single disk covers.
   void refine(double start) {
-    // The level's codes in 8 bytes while its bits fit 64 (to level 32 in
-    // 2D, 21 in 3D, 16 in 4D: every level of a run in practice), 16 past
-    // that: the level-1 codes were the largest block of a run (38 MB at 10^6
-    // in 2D at 16 bytes each).
+    // The level's codes in 4 bytes while its bits fit 32 (to level 16 in
+    // 2D, 10 in 3D, 8 in 4D: the levels that hold nearly all sub-cells), 16
+    // past that: the level-1 codes were the largest block of a run (38 MB at
+    // 10^6 in 2D at 16 bytes each, 19 MB at 8).
     int code_bits = 0;
     for (int a = 0; a < D; ++a) code_bits += bits_[a];
-    SubCellCodes subs(code_bits <= 64);
+    SubCellCodes subs(code_bits <= 32);
     std::vector<Subs> subs_of;
     subs_of.reserve(open_.size());  // at most one a slot: never reallocated
     // The open slots are rewritten in place (a slot moves only down, after it
