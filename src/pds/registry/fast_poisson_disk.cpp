@@ -121,9 +121,10 @@ const Method& ebeida_method() {
               {2, true, 0.02, 0.755, 0.80},
               {3, false, 0.08, 0.82, 0.87},
               {3, true, 0.08, 0.78, 0.83}},
-      // Measured 8.2 in 2D; over the estimate's typical count 16.6 in 3D,
-      // 20.7 in 4D and 249 in 5D, where the listed sub-cells hold about 18 KB
-      // a sample (docs/reliability.md). Past 5D, 1.5 times the ratio measured
+      // Measured 4.6 in 2D at 10^6 and 10^7 (growth over the output; 0.35 of
+      // this estimate); over the estimate's typical count 16.6 in 3D, 20.7 in
+      // 4D and 249 in 5D, where the listed sub-cells hold about 18 KB a
+      // sample (docs/reliability.md). Past 5D, 1.5 times the ratio measured
       // on the unit torus (scripts/peak_memory.py, 822, 256 and 63 points):
       // 1,248 in 6D, 4,629 in 7D, 18,552 in 8D.
       .memory_ratio = 11,
