@@ -25,9 +25,9 @@
 
 #include "pds/samplers/halton.h"
 
+#include "mapped_pages.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
-#include "mapped_pages.h"
 
 namespace pds {
 

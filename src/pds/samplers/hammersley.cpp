@@ -15,9 +15,9 @@
 
 #include "pds/samplers/hammersley.h"
 
+#include "mapped_pages.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
-#include "mapped_pages.h"
 
 namespace pds {
 

@@ -2,11 +2,11 @@
 
 #include <string>
 
+#include "mapped_pages.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/rng.h"
 #include "pds/samplers/strata.h"
-#include "mapped_pages.h"
 
 namespace pds {
 

@@ -20,10 +20,10 @@
 #include <cmath>
 #include <numeric>
 
+#include "mapped_pages.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/samplers/low_discrepancy.h"
-#include "mapped_pages.h"
 
 namespace pds {
 

@@ -23,13 +23,13 @@
 #include <string>
 #include <vector>
 
+#include "mapped_pages.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/rng.h"
 #include "pds/samplers/latin_hypercube.h"
 #include "pds/samplers/low_discrepancy.h"
 #include "pds/samplers/strata.h"
-#include "mapped_pages.h"
 
 namespace pds {
 

@@ -1,8 +1,9 @@
 // Uniform white noise: every coordinate an independent uniform draw from one
 // stream, point after point; one code path for every dimension.
 #include "pds/samplers/random.h"
-#include "pds/detail/instantiate.h"
+
 #include "mapped_pages.h"
+#include "pds/detail/instantiate.h"
 
 namespace pds {
 

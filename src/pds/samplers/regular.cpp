@@ -2,10 +2,10 @@
 
 #include <string>
 
+#include "mapped_pages.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
 #include "pds/samplers/strata.h"
-#include "mapped_pages.h"
 
 namespace pds {
 

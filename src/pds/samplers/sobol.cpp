@@ -36,9 +36,9 @@
 #include <optional>
 #include <vector>
 
+#include "mapped_pages.h"
 #include "pds/detail/instantiate.h"
 #include "pds/error.h"
-#include "mapped_pages.h"
 
 namespace pds {
 namespace detail {

@@ -12,11 +12,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "../mapped_pages.h"
 #include "pds/domain.h"
 #include "pds/error.h"
 #include "pds/grid_neighbourhood.h"
 #include "pds/point.h"
-#include "../mapped_pages.h"
 
 namespace pds::detail::dh {
 
