@@ -52,8 +52,8 @@ class BlockVector {
 
 /// A BlockVector of Wide values kept as Narrow ones when its owner knows they
 /// fit (said once, at construction; a value is cast, not checked): ebeida's
-/// sub-cell codes are 128-bit in general, and under 64 bits at every level
-/// that a run reaches in practice, where they are the largest array.
+/// sub-cell codes are 128-bit in general, and under 32 bits at the levels
+/// that hold nearly all of them, where they are the largest array.
 template <class Wide, class Narrow, unsigned Shift = 16>
 class NarrowableBlockVector {
  public:

@@ -146,12 +146,8 @@ class EbeidaSampler {
     // where offered: they are written all over at once, and their 4 KiB page
     // faults (and the samples' doubling copies) were a fifth of the run at
     // 10^6 in 2D. The samples have room for the usual count and a tenth.
-    state_.reserve(stride);
-    open_.reserve(stride);
-    detail::advise_huge_pages(state_);
-    detail::advise_huge_pages(open_);
-    state_.assign(stride, kOpen);
-    open_.resize(stride);
+    state_ = detail::vector_in_huge_pages<std::int32_t>(stride, kOpen);
+    open_ = detail::vector_in_huge_pages<Open>(stride);
     samples_.reserve(static_cast<std::size_t>(1.1 * typical_count(sizing_volume(domain, r), r, D)) + 16);
     detail::advise_huge_pages(samples_);
     const std::uint64_t key = key_ = level_key(0);

@@ -964,7 +964,7 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   if (!(params.min_rho >= 0.0 && params.min_rho <= 0.8))
     throw InvalidArgument("elimination: min_rho must be in [0, 0.8], got " + detail::format_number(params.min_rho));
   Rng rng(seed);
-  PointSet<D> candidates = detail::output_points<D>(static_cast<std::size_t>(m));
+  PointSet<D> candidates = detail::vector_in_huge_pages<Point<D>>(static_cast<std::size_t>(m));
   for (Point<D>& p : candidates) p = uniform_point(rng, domain);
   PointSet<D> kept =
       eliminate(std::move(candidates), params.count, domain, params.weights, params.progressive, params.progress);
