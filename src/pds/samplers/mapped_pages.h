@@ -1,14 +1,19 @@
 #pragma once
-// Large zeroed arrays straight from the system's pages, for the background
-// grids of the samplers (bridson.cpp, flat_levels.h, maximal_darts.cpp).
+// Large arrays in 2 MiB huge pages where the system offers them (Linux's
+// transparent huge pages, MADV_HUGEPAGE): one page fault per 2 MiB instead of
+// one per 4 KiB (about 16 us each on the sandbox VM) and far fewer TLB misses.
+// map_zeroed() maps zeroed arrays straight from the system's pages: the
+// background grids of bridson.cpp, flat_levels.h, maximal_darts.cpp and
+// dunbar_humphreys/cell_grid.h, read at random all over the front; mapped
+// without huge pages such an array costs nothing until a page is first
+// touched. vector_in_huge_pages() and advise_huge_pages() advise std::vector
+// storage instead (ebeida's grid and slots, elimination's arrays, the plain
+// patterns' outputs). Where mmap is missing arrays come zeroed from calloc and
+// the advice is a no-op: the same bytes, only without those savings.
 //
-// Why not std::vector: a grid of tens of megabytes is read at random, a few
-// cells per query all over the front. Mapped in 2 MiB huge pages where the
-// system offers them (Linux's transparent huge pages, MADV_HUGEPAGE) it
-// costs one page fault per 2 MiB instead of one per 4 KiB and far fewer TLB
-// misses; mapped without them it costs nothing until a page is first touched.
-// Where mmap is missing the array comes zeroed from calloc: the same bytes,
-// only without those two savings.
+// Advice given to a vector's heap block outlives the vector: glibc may later
+// hand that memory to small allocations, which then sit in huge pages too (a
+// larger resident size in a long-lived host process, never other results).
 #if defined(__unix__) || defined(__APPLE__)
 #include <sys/mman.h>
 #define PDS_MAPPED_PAGES 1
@@ -17,6 +22,7 @@
 #endif
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -49,6 +55,7 @@ enum class Pages {
 /// `count` zeroed values of trivial type T (zero bytes must be a valid T).
 template <class T>
 MappedArray<T> map_zeroed(std::size_t count, Pages pages) {
+  if (count > SIZE_MAX / sizeof(T)) throw std::bad_alloc();
   const std::size_t bytes = count * sizeof(T);
   if (bytes == 0) return MappedArray<T>(nullptr, UnmapPages{0});
 #if PDS_MAPPED_PAGES
