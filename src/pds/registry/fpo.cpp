@@ -14,7 +14,7 @@ const Method& fpo_method() {
       .docs = "docs/fpo.md",
       .summary =
           "farthest-point optimization (Schlömer et al.): each point moved to the largest empty circle near it, "
-          "sweeps until the minimum distance stops growing; 2D box or square torus",
+          "sweeps until the spacing stops growing; 2D box or square torus",
       .citation =
           "T. Schlömer, D. Heck, O. Deussen, Farthest-point optimized point sets with maximized minimum "
           "distance, HPG 2011",
@@ -25,8 +25,10 @@ const Method& fpo_method() {
       .memory_ratio = 15,
       .params = {{"sweeps", 1000, 1, 100000, true, "most sweeps (each moves every point once)"},
                  {"tolerance", 1e-5, 0, 1, false,
-                  "stop after a sweep that grows the minimum distance by less than this fraction"},
-                 {"start", 1, 0, 1, true, "starting set: 0 white noise, 1 sample elimination (half the sweeps, same quality)"}},
+                  "stop after a sweep that grows neither the minimum nor the mean nearest-neighbour distance by this "
+                  "fraction"},
+                 {"start", 1, 0, 1, true,
+                  "starting set: 0 white noise, 1 sample elimination (half the sweeps, same quality)"}},
       .run =
           [](const GenerateRequest& r) {
             const Domain<2> domain = r.domain<2>();
