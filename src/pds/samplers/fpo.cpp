@@ -11,8 +11,8 @@
 // x; x goes there if that is farther from its nearest neighbour than its old
 // place was, else it goes back. Sweeps repeat until one grows neither the
 // minimum nor the mean nearest-neighbour distance by a tolerance (the stop
-// rule) or the sweep budget is spent. The paper reports relative radius ~0.93 and an isotropic spectrum
-// with a pronounced peak.
+// rule) or the sweep budget is spent. The paper reports relative radius ~0.93
+// and an isotropic spectrum with a pronounced peak.
 //
 // Our realisation: on a torus CGAL's Periodic_2_Delaunay_triangulation_2
 // (exact predicates, inexact constructions; square tori only), each point
