@@ -52,22 +52,36 @@ BENCHMARK(BM_Elimination<3, true>)->Args({100'000, 0})->Unit(benchmark::kMillise
 // elimination() as `pds generate elimination` runs it: 5N white-noise
 // candidates drawn inside the timing, the progressive order, then min_rho's
 // moves of the closest pairs (second argument: min_rho x 100; 0 is the
-// paper's set, a subset of the candidates).
+// paper's set, a subset of the candidates; third: 1 builds the order in
+// levels, EliminationParams::levels). Counters: rho of the set and of its
+// first 1%, 10% and 50%.
 template <int D>
 void BM_EliminationMinRho(benchmark::State& state) {
   const auto domain = pds::Domain<D>::unit(true);
   const auto n = static_cast<std::uint64_t>(state.range(0));
   const double min_rho = static_cast<double>(state.range(1)) / 100.0;
+  const bool levels = state.range(2) != 0;
   pds::PointSet<D> out;
   for (auto _ : state) {
-    out = pds::elimination<D>({.count = n, .min_rho = min_rho}, domain, 1);
+    out = pds::elimination<D>({.count = n, .min_rho = min_rho, .levels = levels}, domain, 1);
     benchmark::DoNotOptimize(out.data());
   }
   state.counters["rho"] = rho_of(out, domain);
+  for (const auto& [name, percent] : {std::pair{"rho_1pct", 1}, std::pair{"rho_10pct", 10}, std::pair{"rho_50pct", 50}}) {
+    const pds::PointSet<D> prefix(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n * percent / 100));
+    state.counters[name] = rho_of(prefix, domain);
+  }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
 }
-BENCHMARK(BM_EliminationMinRho<2>)->ArgsProduct({{100'000, 1'000'000}, {0, 72}})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_EliminationMinRho<3>)->ArgsProduct({{100'000}, {0, 72}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EliminationMinRho<2>)
+    ->ArgsProduct({{100'000, 1'000'000}, {0, 72}, {0}})
+    ->Args({100'000, 72, 1})
+    ->Args({1'000'000, 72, 1})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EliminationMinRho<3>)
+    ->ArgsProduct({{100'000}, {0, 72}, {0}})
+    ->Args({100'000, 72, 1})
+    ->Unit(benchmark::kMillisecond);
 
 #ifdef PDS_BENCH_CYCODEBASE
 // cySampleElim with its defaults (alpha 8, beta 0.65, gamma 1.5, weight

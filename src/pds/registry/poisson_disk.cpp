@@ -236,6 +236,9 @@ const Method& elimination_method() {
       .memory_scales_with = "candidates",  // the candidates are what takes the memory
       .params = {{"candidates", 5, 1, 100, false, "white-noise candidates as a multiple of the count"},
                  {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
+                 {"levels", 0, 0, 1, true,
+                  "1: progressive order built coarse to fine (every prefix rho ~0.68, at twice the work); 0: the "
+                  "paper's halvings (prefixes ~0.62)"},
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},
                  {"beta", 0.65, 0, 0.99, false, "weight limit d_min = d_max (1 - (N/M)^gamma) beta; 0: none"},
                  {"gamma", 1.5, 0.1, 10, false, "weight limit exponent"},
@@ -250,10 +253,15 @@ const Method& elimination_method() {
               params.count = r.count ? *r.count : 0;
               params.candidates = r.param("candidates", 5);
               params.progressive = r.param("progressive", 1) != 0;
+              params.levels = r.param("levels", 0) != 0;
               params.weights.alpha = r.param("alpha", 8);
               params.weights.beta = r.param("beta", 0.65);
               params.weights.gamma = r.param("gamma", 1.5);
               params.min_rho = r.param("min_rho", 0.72);
+              if (params.levels && (!params.progressive || params.min_rho == 0.0 || r.constraints.active()))
+                throw InvalidArgument(
+                    "elimination: levels=1 builds the progressive order with the moves of min_rho; it needs "
+                    "progressive=1, min_rho above 0 and no density or mask");
               params.progress = r.progress;
               // The candidates, not the output, are what takes the memory.
               require_point_budget(std::ceil(params.candidates * static_cast<double>(params.count)), r.dim,
