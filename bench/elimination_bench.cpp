@@ -67,7 +67,8 @@ void BM_EliminationMinRho(benchmark::State& state) {
     benchmark::DoNotOptimize(out.data());
   }
   state.counters["rho"] = rho_of(out, domain);
-  for (const auto& [name, percent] : {std::pair{"rho_1pct", 1}, std::pair{"rho_10pct", 10}, std::pair{"rho_50pct", 50}}) {
+  for (const auto& [name, percent] :
+       {std::pair{"rho_1pct", 1}, std::pair{"rho_10pct", 10}, std::pair{"rho_50pct", 50}}) {
     const pds::PointSet<D> prefix(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(n * percent / 100));
     state.counters[name] = rho_of(prefix, domain);
   }

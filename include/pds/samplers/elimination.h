@@ -56,9 +56,10 @@ struct EliminationParams {
   /// share of the candidates (the first candidates x its count) by the same
   /// elimination around the levels below (which stay), moves its new points
   /// apart to min_rho and appends them farthest first. Measured (2D torus):
-  /// no prefix below rho ~0.68, where the halvings' fall to ~0.62, for about
-  /// twice the elimination work, and the full set at 0.71-0.72 instead of
-  /// 0.72 (more of it is fixed before its own round). False: the halvings.
+  /// no prefix below rho ~0.68 (the halvings' fall to ~0.60), the full set
+  /// at 0.72 as with the halvings but with a lower spectral peak, for 2.8 to
+  /// 3.9 times the time (22% of the points move; docs/elimination.md). False:
+  /// the halvings.
   bool levels = false;
   /// Optional progress (candidates removed, over every round) and
   /// cancellation (pds/progress.h).

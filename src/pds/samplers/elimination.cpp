@@ -795,8 +795,7 @@ PointSet<D> eliminate_consuming(PointSet<D>&& candidates, std::span<const double
 // points left without a place try the whole domain (below).
 template <int D>
 PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, double spacing, std::size_t fixed,
-                                 bool progressive, std::uint64_t seed, std::uint64_t level = 0,
-                                 bool relocate = false) {
+                                 bool progressive, std::uint64_t seed, std::uint64_t level = 0, bool relocate = false) {
   const std::size_t n = points.size();
   if (n < 2 || !(spacing > 0.0)) return points;
   const std::size_t half = std::min(fixed, n);
@@ -1009,9 +1008,10 @@ void order_farthest_first(PointSet<D>& points, std::size_t fixed, const Domain<D
 // The paper's halvings pick each half from the set below it, and a set
 // spread for N points holds no subset spread for N/2 much beyond rho 0.63
 // (docs/elimination.md). Here each level is made for its own count: the
-// counts halve from N down to kFirstLevel, and level n keeps n points of the
-// first candidates x n candidates (all of them for N), eliminating around the
-// points of the levels below, which stay (their terms are constant weights).
+// counts shrink by sqrt(2) from N down to kFirstLevel, and level n keeps n
+// points of the first kLowerFactor x n candidates (all of them for N),
+// eliminating around the points of the levels below, which stay (their terms
+// are constant weights).
 // Then its new points move apart to min_rho x its d_max (the levels below
 // stay put) and follow the levels below farthest first. So every level is a
 // prefix with the minimum distance a set of its own count gets, and the
@@ -1022,8 +1022,7 @@ PointSet<D> eliminate_in_levels(PointSet<D>&& candidates, std::size_t count, con
                                 const Progress& progress) {
   // Counts shrink by sqrt(2) a level: by 2 the prefixes just past a level
   // fell to rho 0.645 (the level's holes are few and small), by sqrt(2) no
-  // prefix went below 0.679, at about twice the elimination work
-  // (docs/elimination.md).
+  // prefix went below 0.679 (docs/elimination.md).
   constexpr std::size_t kFirstLevel = 16;
   // The levels below N draw on at most 2 candidates a point: the moves, not
   // the candidates, set their spacing (2, 3 and 5 gave the same prefixes at
@@ -1039,8 +1038,8 @@ PointSet<D> eliminate_in_levels(PointSet<D>&& candidates, std::size_t count, con
   double total = 0.0;
   for (std::size_t j = 0; j < sizes.size(); ++j) {
     if (j + 1 < sizes.size())
-      pools[j] = std::min(m, static_cast<std::size_t>(std::ceil(std::min(factor, kLowerFactor) *
-                                                                static_cast<double>(sizes[j]))));
+      pools[j] = std::min(
+          m, static_cast<std::size_t>(std::ceil(std::min(factor, kLowerFactor) * static_cast<double>(sizes[j]))));
     total += static_cast<double>(pools[j] - sizes[j]);
   }
   ProgressReporter reporter(progress, total);
@@ -1159,8 +1158,8 @@ PointSet<D> elimination(const EliminationParams& params, const Domain<D>& domain
   PointSet<D> candidates = detail::vector_in_huge_pages<Point<D>>(static_cast<std::size_t>(m));
   for (Point<D>& p : candidates) p = uniform_point(rng, domain);
   if (params.progressive && params.levels && params.min_rho > 0.0)
-    return eliminate_in_levels<D>(std::move(candidates), static_cast<std::size_t>(params.count), domain,
-                                  params.weights, params.min_rho, seed, params.progress);
+    return eliminate_in_levels<D>(std::move(candidates), static_cast<std::size_t>(params.count), domain, params.weights,
+                                  params.min_rho, seed, params.progress);
   PointSet<D> kept =
       eliminate(std::move(candidates), params.count, domain, params.weights, params.progressive, params.progress);
   const double spacing = params.min_rho * 2.0 * max_packing_radius(domain.volume(), params.count, D);

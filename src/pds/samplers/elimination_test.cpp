@@ -306,7 +306,8 @@ void check_levels(const Domain<D>& domain, std::size_t n, std::uint64_t seed, do
   const PointSet<D> halvings = elimination<D>({.count = n}, domain, seed);
   const std::vector<double> nu = prefix_minima(halvings, domain);
   double paper_worst = 1.0;
-  for (std::size_t k = kFrom; k <= n; ++k) paper_worst = std::min(paper_worst, relative_radius(nu[k], domain.volume(), k, D));
+  for (std::size_t k = kFrom; k <= n; ++k)
+    paper_worst = std::min(paper_worst, relative_radius(nu[k], domain.volume(), k, D));
   EXPECT_LT(paper_worst, every_prefix) << where;
   std::printf("%s: every prefix >= %.3f (first %zu), full set %.3f; halvings' worst prefix %.3f\n", where.c_str(),
               worst, at, relative_radius(mu[n], domain.volume(), n, D), paper_worst);
