@@ -14,6 +14,7 @@
 #include "pds/analysis/distance.h"
 #include "pds/analysis/relative_radius.h"
 #include "pds/error.h"
+#include "pds/progress.h"
 #include "pds/registry.h"
 #include "pds/rng.h"
 #include "pds/samplers/random.h"
@@ -323,6 +324,29 @@ TEST(Elimination, LevelsKeepEveryPrefixSpread) {
   check_levels<3>(Domain<3>::unit(true), 3000, 1, 0.68, 0.715);
   check_levels<3>(Domain<3>::box({0, 0, 0}, {1, 2, 0.5}), 2000, 2, 0.69, 0.715);
   check_levels<1>(Domain<1>{{0}, {1}, true}, 1000, 1, 0.60, 0.715);
+}
+
+// The levels report their removals over every level, monotone up to the
+// total, change no byte by it, and stop when asked.
+TEST(Elimination, LevelsReportProgressAndStopWhenAsked) {
+  const auto domain = Domain<2>::unit(true);
+  EliminationParams params{.count = 2000, .levels = true};
+  const PointSet<2> quiet = elimination<2>(params, domain, 4);
+  std::vector<std::pair<double, double>> reports;
+  params.progress.report = [&](double done, double total) {
+    reports.emplace_back(done, total);
+    return true;
+  };
+  EXPECT_EQ(elimination<2>(params, domain, 4), quiet);
+  ASSERT_GE(reports.size(), 2u);
+  for (std::size_t i = 1; i < reports.size(); ++i) {
+    EXPECT_GE(reports[i].first, reports[i - 1].first);
+    EXPECT_EQ(reports[i].second, reports[0].second);
+  }
+  EXPECT_EQ(reports.back().first, reports.back().second);
+  int calls = 0;
+  params.progress.report = [&](double, double) { return ++calls < 3; };
+  EXPECT_THROW(elimination<2>(params, domain, 4), Cancelled);
 }
 
 // On a torus the spacing holds across the seam; the same elimination in the
