@@ -57,6 +57,7 @@ off_surface=$(awk -F, 'NR > 1 { r = sqrt($1*$1 + $2*$2 + $3*$3); if (r > 1 + 1e-
 # --radius sizes the count: 4 pi / (2 sqrt 3 (0.1 / 1.38)^2), near 680.
 expect_exit 0 "" -- generate elimination --mesh "$tmp/s.obj" --radius 0.1 -o "$tmp/r.csv"
 expect_exit 2 "--mesh does not take min_rho" -- generate elimination --mesh "$tmp/s.obj" --count 100 --param min_rho=0.7 -o "$tmp/x.csv"
+expect_exit 2 "--mesh does not take levels" -- generate elimination --mesh "$tmp/s.obj" --count 100 --param levels=1 -o "$tmp/x.csv"
 n=$(($(wc -l <"$tmp/r.csv") - 1))
 [[ $n -gt 600 && $n -lt 720 ]] && ok || bad "--radius 0.1 gave $n samples"
 # PLY output: the header names the columns, then 7 values a sample

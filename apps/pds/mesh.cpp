@@ -55,6 +55,8 @@ void generate_on_mesh(const CLI::App& command, const std::string& method, const 
   // On a surface every sample stays one of the candidates.
   if (params.count("min_rho"))
     throw InvalidArgument("--mesh does not take min_rho: on a surface each sample is one of the candidates");
+  if (params.count("levels"))
+    throw InvalidArgument("--mesh does not take levels: on a surface the order is the paper's halvings");
   sp.count = by_count ? generation.count : surface_count_for_radius(surface_area(mesh), generation.radius);
   sp.candidates = param("candidates", 5);
   // Off by default on a surface: it doubles the time, and a mesh's samples

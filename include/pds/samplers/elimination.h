@@ -52,14 +52,17 @@ struct EliminationParams {
   double min_rho = 0.72;
   /// With progressive order and min_rho above 0, build the order coarse to
   /// fine instead of by the paper's halvings: counts shrink by sqrt(2) a
-  /// level from N down to 16, and each level keeps its own count from its
-  /// share of the candidates (the first candidates x its count) by the same
-  /// elimination around the levels below (which stay), moves its new points
-  /// apart to min_rho and appends them farthest first. Measured (2D torus):
-  /// no prefix below rho ~0.68 (the halvings' fall to ~0.60), the full set
-  /// at 0.72 as with the halvings but with a lower spectral peak, for 2.8 to
-  /// 3.9 times the time (22% of the points move; docs/elimination.md). False:
-  /// the halvings.
+  /// level from N down to the first count <= 16, and each level keeps its own
+  /// count from its share of the candidates (the first min(candidates, 2) x
+  /// its count; all of them for N) by the same elimination around the levels
+  /// below (which stay), moves its new points apart to min_rho (about three
+  /// quarters of them move: most output points are not candidates) and
+  /// appends them farthest first. Measured (2D torus): prefixes at 1% steps
+  /// at rho >= ~0.68 (from 32 points on >= ~0.655), where the halvings' fall
+  /// to ~0.60; the full set at 0.72 as with the halvings but with a lower
+  /// spectral peak; 3 to 4 times the time (docs/elimination.md). Ignored,
+  /// like min_rho, by the overload with a density or mask. False: the
+  /// halvings.
   bool levels = false;
   /// Optional progress (candidates removed, over every round) and
   /// cancellation (pds/progress.h).

@@ -762,6 +762,19 @@ PointSet<D> eliminate_consuming(PointSet<D>&& candidates, std::span<const double
   return out;
 }
 
+// A grid cell edge of at least `edge`, doubled while the grid would have more
+// than 8 cells a point (of `points`): a thin axis would otherwise make far
+// more cells than points.
+template <int D>
+double capped_cell_edge(const Domain<D>& domain, double edge, std::size_t points) {
+  for (;;) {
+    double cells = 1.0;
+    for (int a = 0; a < D; ++a) cells *= std::max(1.0, std::ceil(domain.extent(a) / edge));
+    if (cells <= std::min(8.0 * static_cast<double>(points) + 64.0, static_cast<double>(kMaxGridCells))) return edge;
+    edge *= 2.0;
+  }
+}
+
 // Moves the points of pairs closer than `spacing` (EliminationParams::min_rho)
 // to free places nearby. From 5N candidates the closest pairs sit near 0.69
 // d_max, yet the set has room for ~11% more points at 0.72 (random
@@ -792,10 +805,12 @@ PointSet<D> eliminate_consuming(PointSet<D>&& candidates, std::span<const double
 // `fixed` leading points never move (the halvings' first half, or the levels
 // before this one); `progressive` adds the rule for every prefix. `level`
 // picks the stream of trials. `relocate`: one pass of trials near, then the
-// points left without a place try the whole domain (below).
+// points left without a place try the whole domain (below). `reporter`, if
+// given, hears a poll a point (for a prompt stop; the count does not move).
 template <int D>
 PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, double spacing, std::size_t fixed,
-                                 bool progressive, std::uint64_t seed, std::uint64_t level = 0, bool relocate = false) {
+                                 bool progressive, std::uint64_t seed, std::uint64_t level = 0, bool relocate = false,
+                                 ProgressReporter* reporter = nullptr) {
   const std::size_t n = points.size();
   if (n < 2 || !(spacing > 0.0)) return points;
   const std::size_t half = std::min(fixed, n);
@@ -805,15 +820,8 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
   const double reach =
       progressive ? std::max(spacing, 2.0 * max_packing_radius(domain.volume(), std::max<std::size_t>(half, 1), D))
                   : spacing;
-  // Cells of edge spacing, about two a point; wider where a thin axis would
-  // make far more cells than points.
-  double edge = spacing;
-  for (;;) {
-    double cells = 1.0;
-    for (int a = 0; a < D; ++a) cells *= std::max(1.0, std::ceil(domain.extent(a) / edge));
-    if (cells <= std::min(8.0 * static_cast<double>(n) + 64.0, static_cast<double>(kMaxGridCells))) break;
-    edge *= 2.0;
-  }
+  // Cells of edge spacing, about two a point.
+  const double edge = capped_cell_edge(domain, spacing, n);
   Grid<D> grid(domain, edge);
   grid.reserve(n);
   // prefix2[k - half]: mu(k)^2, the squared minimum distance of the first k
@@ -878,18 +886,25 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
   // the room at 0.72 is rarely near the point: without this the levels' full
   // set stopped at rho 0.68 at 10^5 points, with it 0.72, and the later
   // passes' trials near the point took three quarters of the time.
+  // Once kHopeless points in a row found no place, min_rho asks for more
+  // room than the set has (0.8 at 20,000 points took 25 times as long
+  // before), and the rest stay for the passes.
+  constexpr int kHopeless = 4;
   const auto relocate_stuck = [&] {
     std::vector<std::uint32_t> stuck;
+    int failed = 0;
     for (const std::uint32_t i : close) {
+      if (reporter != nullptr) reporter->poll();
       if (score(at[i], i) >= 1.0) continue;
       bool placed = false;
-      for (int t = 0; t < kRelocationTrials && !placed; ++t) {
+      for (int t = 0; t < kRelocationTrials && !placed && failed < kHopeless; ++t) {
         const Point<D> x = uniform_point(rng, domain);
         if (score(x, i) >= 1.0) {
           grid.move(static_cast<std::int32_t>(i), x);
           placed = true;
         }
       }
+      failed = placed ? 0 : failed + 1;
       if (!placed) stuck.push_back(i);
     }
     close = std::move(stuck);
@@ -905,6 +920,7 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
     std::size_t moved = 0;
     const int trials = pass == 0 ? kTrials : 8 * kTrials;
     for (const std::uint32_t i : close) {
+      if (reporter != nullptr) reporter->poll();
       const double now = score(at[i], i);
       if (now >= 1.0) continue;  // its partner moved
       double best_score = now;
@@ -953,6 +969,7 @@ template <int D>
 void order_farthest_first(PointSet<D>& points, std::size_t fixed, const Domain<D>& domain, double edge) {
   const std::size_t n = points.size();
   if (n < fixed + 2) return;
+  edge = capped_cell_edge(domain, edge, n);
   Grid<D> grid(domain, edge);
   grid.reserve(n);
   for (std::size_t i = 0; i < fixed; ++i) grid.insert(points[i]);
@@ -1052,7 +1069,7 @@ PointSet<D> eliminate_in_levels(PointSet<D>&& candidates, std::size_t count, con
     const bool top = j + 1 == sizes.size();
     const double d_max = 2.0 * max_packing_radius(domain.volume(), n, D);
     const WeightFunction weight(d_max, weight_limit(d_max, n, pool, weights), weights.alpha);
-    Grid<D> fixed(domain, d_max);
+    Grid<D> fixed(domain, capped_cell_edge(domain, d_max, below));
     fixed.reserve(below);
     for (const Point<D>& p : set) fixed.insert(p);
     // This level's candidates: the first `pool`, less those the levels below
@@ -1082,7 +1099,7 @@ PointSet<D> eliminate_in_levels(PointSet<D>&& candidates, std::size_t count, con
     done += static_cast<double>(pool - n);
     set.insert(set.end(), added.begin(), added.end());
     set = spread_closest_pairs<D>(std::move(set), domain, min_rho * d_max, below, /*progressive=*/false, seed, j + 1,
-                                  /*relocate=*/true);
+                                  /*relocate=*/true, &reporter);
     order_farthest_first<D>(set, below, domain, d_max);
   }
   reporter.finish();
