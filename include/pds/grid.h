@@ -56,6 +56,17 @@ class Grid {
       extent_scale_ = std::max({extent_scale_, std::abs(domain.lo[i]), std::abs(domain.hi[i])});
   }
 
+  /// `edge`, doubled until a grid of that edge would have at most max_cells
+  /// cells: a thin axis would otherwise make far more cells than points.
+  static double edge_for_at_most(const Domain<D>& domain, double edge, double max_cells) {
+    for (;;) {
+      double cells = 1.0;
+      for (int i = 0; i < D; ++i) cells *= std::max(1.0, std::ceil(domain.extent(i) / edge));
+      if (cells <= max_cells) return edge;
+      edge *= 2.0;
+    }
+  }
+
   /// The grid for points at least `radius` apart: cell edge radius/sqrt(D).
   static Grid for_radius(const Domain<D>& domain, double radius, std::size_t max_cells = kMaxGridCells) {
     return Grid(domain, radius / std::sqrt(static_cast<double>(D)), max_cells);

@@ -59,12 +59,7 @@ NearestNeighbors nearest_by_grid(const PointSet<D>& points, const Domain<D>& dom
   // within the radius was seen).
   double edge = std::pow(domain.volume() / static_cast<double>(n), 1.0 / D);
   const double max_cells = 4.0 * static_cast<double>(n) + 64.0;
-  auto cells_for = [&](double e) {
-    double c = 1.0;
-    for (int i = 0; i < D; ++i) c *= std::max(1.0, std::ceil(domain.extent(i) / e));
-    return c;
-  };
-  while (cells_for(edge) > max_cells) edge *= 2.0;  // very elongated domains
+  edge = Grid<D>::edge_for_at_most(domain, edge, max_cells);  // very elongated domains
   Grid<D> grid(domain, edge, static_cast<std::size_t>(max_cells));
   for (const auto& p : points) grid.insert(p);
 
