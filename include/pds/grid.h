@@ -103,6 +103,8 @@ class Grid {
     next_.reserve(n);
   }
   std::size_t cell_count() const { return head_.size(); }
+  /// Whether no stored point lies in cell `cell` (0 <= cell < cell_count()).
+  bool cell_empty(std::size_t cell) const { return head_[cell] < 0; }
   int cells(int axis) const { return hood_.cells(axis); }
   double cell_edge(int axis) const { return hood_.edge(axis); }
   /// The cell arithmetic (windows, stencils) of this grid.

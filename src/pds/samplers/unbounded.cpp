@@ -63,11 +63,12 @@
 #include <unordered_map>
 #include <vector>
 
+#include "block_vector.h"
+#include "mapped_pages.h"
 #include "pds/detail/format.h"
 #include "pds/error.h"
 #include "pds/portable_math.h"
 #include "pds/rng.h"
-#include "block_vector.h"
 
 namespace pds {
 namespace {
@@ -254,8 +255,10 @@ class Settler {
       dense_n_[a] = hi[a] - lo[a] + 1 + 2 * kDenseMargin;
       size *= static_cast<std::size_t>(dense_n_[a]);
     }
-    dense_.resize(size);
-    dense_summary_.resize(size);
+    // Huge pages where offered (mapped_pages.h): both arrays are written
+    // through at once, and their 4 KiB page faults were a tenth of a 2D run.
+    dense_ = detail::vector_in_huge_pages<CellState<D>>(size);
+    dense_summary_ = detail::vector_in_huge_pages<CellSummary<D>>(size);
     std::int64_t stride = 1;
     for (int a = 0; a < D; ++a) {
       dense_stride_[a] = stride;
