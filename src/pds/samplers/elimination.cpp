@@ -801,7 +801,7 @@ double capped_cell_edge(const Domain<D>& domain, double edge, std::size_t points
 // `fixed` leading points never move (the halvings' first half, or the levels
 // before this one); `progressive` adds the rule for every prefix. `level`
 // picks the stream of trials. `relocate`: one pass of trials near, then the
-// points left without a place try the whole domain (below). `reporter`, if
+// points left without a place try the empty cells anywhere (below). `reporter`, if
 // given, hears a poll a point (for a prompt stop; the count does not move).
 template <int D>
 PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, double spacing, std::size_t fixed,
@@ -887,8 +887,8 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
   // set stopped at rho 0.68 at 10^5 points, with it 0.72, and the later
   // passes' trials near the point took three quarters of the time.
   // Once kHopeless points in a row found no place, min_rho asks for more
-  // room than the set has (0.8 at 20,000 points took 31 s before, 8.8 s
-  // since), and the rest stay for the passes.
+  // room than the set has (0.8 at 20,000 points took 31 s before, 5.6 s
+  // since, with the levels), and the rest stay for the passes.
   constexpr int kHopeless = 4;
   const auto relocate_stuck = [&] {
     std::vector<std::uint32_t> stuck, empty;
@@ -931,9 +931,9 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
       double best_score = now;
       Point<D> best = at[i];
       for (const double scale : {1.0, 2.0, 3.0}) {
-        // With `relocate` the first pass stays within one spacing: a point
-        // with no room there rarely finds it two or three away, and the
-        // relocation finds room in about a hundred trials.
+        // With `relocate` the first pass takes the first scale only: a
+        // point with no room there rarely finds it at the larger ones, and
+        // the relocation finds room in about a hundred trials.
         if (best_score >= 1.0 || (relocate && pass == 0 && scale > 1.0)) break;
         double half_edge = scale * spacing;
         for (int round = 0; round < kRounds && !(relocate && best_score >= 1.0); ++round, half_edge *= 0.5) {
