@@ -850,6 +850,15 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
   std::sort(close.begin(), close.end());
   close.erase(std::unique(close.begin(), close.end()), close.end());
   close.erase(close.begin(), std::lower_bound(close.begin(), close.end(), static_cast<std::uint32_t>(first)));
+  if (relocate) {
+    // Visited in the grid's order, not the points' (a level's points are in
+    // farthest-first order, all over the domain): each visit's cells are
+    // then mostly in cache from the one before.
+    std::vector<std::pair<std::size_t, std::uint32_t>> by_cell(close.size());
+    for (std::size_t k = 0; k < close.size(); ++k) by_cell[k] = {grid.cell_of(grid.points()[close[k]]), close[k]};
+    std::sort(by_cell.begin(), by_cell.end());
+    for (std::size_t k = 0; k < close.size(); ++k) close[k] = by_cell[k].second;
+  }
 
   const PointSet<D>& at = grid.points();
   // Where point i could go: -infinity if some pair (i, j) would be closer
@@ -893,6 +902,7 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
   const auto relocate_stuck = [&] {
     std::vector<std::uint32_t> stuck, empty;
     int failed = 0;
+    std::size_t cursor = 0;
     for (std::size_t c = 0; c < grid.cell_count(); ++c)
       if (grid.cell_empty(c)) empty.push_back(static_cast<std::uint32_t>(c));
     for (const std::uint32_t i : close) {
@@ -900,7 +910,8 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
       if (score(at[i], i) >= 1.0) continue;
       bool placed = false;
       for (int t = 0; t < kRelocationTrials && !placed && failed < kHopeless && !empty.empty(); ++t) {
-        const std::array<int, D> c = grid.neighbourhood().coords(empty[rng.below(empty.size())]);
+        const std::array<int, D> c = grid.neighbourhood().coords(empty[cursor]);
+        cursor = cursor + 1 == empty.size() ? 0 : cursor + 1;
         Point<D> x;
         for (int a = 0; a < D; ++a) x[a] = domain.lo[a] + (c[a] + rng.uniform()) * grid.cell_edge(a);
         if (!domain.contains(x)) continue;
