@@ -889,12 +889,14 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
   // `relocate`: a point takes the first trial that keeps every rule (not the
   // best of its round: 10% faster, no change in rho or the prefixes at 10^5
   // points), and after the first pass a point still without a place spacing
-  // from the others may go anywhere that has one (uniform trials in the
-  // grid's empty cells, listed once: a trial anywhere in the domain found
-  // room half as often); the later passes then take the few left. Around
-  // fixed levels the room at 0.72 is rarely near the point: without this the levels' full
-  // set stopped at rho 0.68 at 10^5 points, with it 0.72, and the later
-  // passes' trials near the point took three quarters of the time.
+  // from the others may go anywhere that has one: trials in the grid's
+  // empty cells, listed once and taken in the grid's order by a cursor,
+  // uniform within a cell (a trial anywhere in the domain found room half
+  // as often, and empty cells drawn at random missed the caches at 10^6
+  // points); the later passes then take the few left. Around fixed levels
+  // the room at 0.72 is rarely near the point: without this the levels'
+  // full set stopped at rho 0.68 at 10^5 points, with it 0.72, and the
+  // later passes' trials near the point took three quarters of the time.
   // Once kHopeless points in a row found no place, min_rho asks for more
   // room than the set has (0.8 at 20,000 points took 31 s before, 5.6 s
   // since, with the levels), and the rest stay for the passes.
