@@ -60,7 +60,7 @@ struct EliminationParams {
   /// appends them farthest first. Measured (2D torus): prefixes at 1% steps
   /// at rho >= ~0.68 (from 32 points on >= ~0.655), where the halvings' fall
   /// to ~0.60; the full set at 0.72 as with the halvings but with a lower
-  /// spectral peak; 3 to 4 times the time (docs/elimination.md). Ignored,
+  /// spectral peak; about twice the time (docs/elimination.md). Ignored,
   /// like min_rho, by the overload with a density or mask. False: the
   /// halvings.
   bool levels = false;
