@@ -1,0 +1,63 @@
+// The memory floor of the methods built on CGAL's triangulations (`jones`
+// and `fpo`): peak RSS of a CGAL Delaunay triangulation of N uniform points
+// in the unit square, plain and periodic, over what the points themselves
+// take, per point and as a multiple of the 16-byte 2D float64 sample. Run:
+//
+//   build/bench/pds_triangulation_memory [plain|periodic] [N]
+//
+// One triangulation a process, so that each peak is its own.
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
+#include <CGAL/Periodic_2_Delaunay_triangulation_traits_2.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// A field of /proc/self/status in KiB (VmRSS: now; VmHWM: the peak).
+long status_kib(const std::string& key) {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.compare(0, key.size(), key) == 0) return std::stol(line.substr(key.size()));
+  return -1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string kind = argc > 1 ? argv[1] : "periodic";
+  const long count = argc > 2 ? std::atol(argv[2]) : 1000000;
+  if ((kind != "plain" && kind != "periodic") || count < 3) {
+    std::fprintf(stderr, "usage: %s [plain|periodic] [N >= 3]\n", argv[0]);
+    return 2;
+  }
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Kernel::Point_2> points;
+  points.reserve(static_cast<std::size_t>(count));
+  for (long i = 0; i < count; ++i) points.emplace_back(unit(rng), unit(rng));
+  const long before = status_kib("VmRSS:");
+  std::size_t vertices = 0;
+  if (kind == "plain") {
+    const CGAL::Delaunay_triangulation_2<Kernel> triangulation(points.begin(), points.end());
+    vertices = triangulation.number_of_vertices();
+  } else {
+    using Traits = CGAL::Periodic_2_Delaunay_triangulation_traits_2<Kernel>;
+    const CGAL::Periodic_2_Delaunay_triangulation_2<Traits> triangulation(points.begin(), points.end());
+    vertices = triangulation.number_of_vertices();
+  }
+  const double growth = (status_kib("VmHWM:") - before) * 1024.0;
+  std::printf(
+      "%s triangulation, %zu vertices: %.1f MB over the points, %.0f bytes a point, %.1fx a 2D float64 sample\n",
+      kind.c_str(), vertices, growth / 1e6, growth / count, growth / count / 16.0);
+  return 0;
+}
