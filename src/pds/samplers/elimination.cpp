@@ -829,14 +829,17 @@ PointSet<D> spread_closest_pairs(PointSet<D> points, const Domain<D>& domain, do
   double mu2 = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < n; ++k) {
     bool near = false;
-    grid.for_each_within(points[k], reach, [&](std::int32_t j, double d2) {
-      mu2 = std::min(mu2, d2);
-      if (d2 < spacing2) {
-        near = true;
-        if (static_cast<std::size_t>(j) >= half) close.push_back(static_cast<std::uint32_t>(j));
-      }
-      return true;
-    });
+    // A fixed point's pairs with the points before it (fixed too) matter
+    // only to the prefixes' minima.
+    if (progressive || k >= half)
+      grid.for_each_within(points[k], reach, [&](std::int32_t j, double d2) {
+        mu2 = std::min(mu2, d2);
+        if (d2 < spacing2) {
+          near = true;
+          if (static_cast<std::size_t>(j) >= half) close.push_back(static_cast<std::uint32_t>(j));
+        }
+        return true;
+      });
     if (near && k >= half) close.push_back(static_cast<std::uint32_t>(k));
     grid.insert(points[k]);
     if (progressive && k + 1 >= half) prefix2[k + 1 - half] = mu2;
