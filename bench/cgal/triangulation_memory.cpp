@@ -1,7 +1,10 @@
 // The memory floor of the methods built on CGAL's triangulations (`jones`
 // and `fpo`): peak RSS of a CGAL Delaunay triangulation of N uniform points
 // in the unit square, plain and periodic, over what the points themselves
-// take, per point and as a multiple of the 16-byte 2D float64 sample. Run:
+// take, per point and as a multiple of the 16-byte 2D float64 sample. The
+// points are sorted along a Hilbert curve in place first and inserted one at
+// a time, each from the last one's face (as the samplers insert): the range
+// constructors would add a sorted copy of the input to the peak. Run:
 //
 //   build/bench/pds_triangulation_memory [plain|periodic] [N]
 //
@@ -11,12 +14,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Periodic_2_Delaunay_triangulation_2.h>
 #include <CGAL/Periodic_2_Delaunay_triangulation_traits_2.h>
+#include <CGAL/spatial_sort.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -45,15 +50,22 @@ int main(int argc, char** argv) {
   std::vector<Kernel::Point_2> points;
   points.reserve(static_cast<std::size_t>(count));
   for (long i = 0; i < count; ++i) points.emplace_back(unit(rng), unit(rng));
+  CGAL::spatial_sort(points.begin(), points.end());
   const long before = status_kib("VmRSS:");
+  // Inserted one at a time, each from the face of the one before.
+  const auto fill = [&](auto& triangulation) {
+    typename std::remove_reference_t<decltype(triangulation)>::Face_handle hint;
+    for (const Kernel::Point_2& p : points) hint = triangulation.insert(p, hint)->face();
+    return triangulation.number_of_vertices();
+  };
   std::size_t vertices = 0;
   if (kind == "plain") {
-    const CGAL::Delaunay_triangulation_2<Kernel> triangulation(points.begin(), points.end());
-    vertices = triangulation.number_of_vertices();
+    CGAL::Delaunay_triangulation_2<Kernel> triangulation;
+    vertices = fill(triangulation);
   } else {
     using Traits = CGAL::Periodic_2_Delaunay_triangulation_traits_2<Kernel>;
-    const CGAL::Periodic_2_Delaunay_triangulation_2<Traits> triangulation(points.begin(), points.end());
-    vertices = triangulation.number_of_vertices();
+    CGAL::Periodic_2_Delaunay_triangulation_2<Traits> triangulation;
+    vertices = fill(triangulation);
   }
   const double growth = (status_kib("VmHWM:") - before) * 1024.0;
   std::printf(

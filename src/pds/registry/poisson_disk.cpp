@@ -238,7 +238,7 @@ const Method& elimination_method() {
                  {"progressive", 1, 0, 1, true, "1: every prefix well spread (recursive halving); 0: candidate order"},
                  {"levels", 0, 0, 1, true,
                   "1: progressive order built coarse to fine, level by level, most points moved (prefixes at 1% "
-                  "steps rho >= ~0.67, at about twice the time); 0: the paper's halvings (prefixes ~0.62)"},
+                  "steps rho >= ~0.66, at about twice the time); 0: the paper's halvings (prefixes ~0.62)"},
                  {"alpha", 8, 0.1, 64, false, "exponent of the weight function"},
                  {"beta", 0.65, 0, 0.99, false, "weight limit d_min = d_max (1 - (N/M)^gamma) beta; 0: none"},
                  {"gamma", 1.5, 0.1, 10, false, "weight limit exponent"},

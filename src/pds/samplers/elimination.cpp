@@ -1064,18 +1064,17 @@ PointSet<D> eliminate_in_levels(PointSet<D>&& candidates, std::size_t count, con
                                 const Progress& progress) {
   // Counts shrink by sqrt(2) a level: by 2 the prefixes just past a level
   // fell to rho 0.645 (the level's holes are few and small), by sqrt(2) no
-  // prefix went below 0.679 (docs/elimination.md).
+  // prefix went below 0.679 (every level then at min_rho; docs/elimination.md).
   constexpr std::size_t kFirstLevel = 16;
   // The levels below N draw on at most 2 candidates a point: the moves, not
   // the candidates, set their spacing (2, 3 and 5 gave the same prefixes at
   // 10^5 points, 2 in three quarters of 5's time).
   constexpr double kLowerFactor = 2.0;
   // From 2D on the levels below N move their points apart to min_rho less
-  // this: their prefixes then sit about 0.01 lower (the worst of the 1%
-  // steps 0.673 against 0.683 at 10^6 points in 2D) and the moves, most of
-  // the run, take about a third less time; N itself keeps min_rho
-  // (docs/elimination.md). 1D, whose prefixes are the weakest (0.592
-  // against 0.620 in the test) and whose runs are short, keeps min_rho.
+  // this (N itself keeps min_rho): the prefixes sit about 0.01 lower, still
+  // well above 0.65, and a level run takes about 12% less time
+  // (docs/elimination.md). 1D keeps min_rho: its prefixes are the weakest
+  // (with the slack the test's 1D case fell from 0.620 to 0.592).
   constexpr double kLowerRhoSlack = D >= 2 ? 0.02 : 0.0;
   const std::size_t m = candidates.size();
   const double factor = static_cast<double>(m) / static_cast<double>(count);
@@ -1130,7 +1129,7 @@ PointSet<D> eliminate_in_levels(PointSet<D>&& candidates, std::size_t count, con
     const PointSet<D> added = round.take_survivors();
     done += static_cast<double>(pool - n);
     set.insert(set.end(), added.begin(), added.end());
-    const double rho = top ? min_rho : std::max(0.0, min_rho - kLowerRhoSlack);
+    const double rho = top ? min_rho : min_rho - kLowerRhoSlack;  // <= 0: no moves
     set = spread_closest_pairs<D>(std::move(set), domain, rho * d_max, below, /*progressive=*/false, seed, j + 1,
                                   /*relocate=*/true, &reporter);
     order_farthest_first<D>(set, below, domain, d_max);
