@@ -8,7 +8,6 @@
 // peak_rss_MB, the growth of the process's high-water resident set over the
 // run, against output_MB, the size of the returned points.
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 
 #include <cmath>
 
@@ -20,14 +19,11 @@
 #include "pds/samplers/jones.h"
 #include "pds/samplers/maximal_darts.h"
 #include "pds/samplers/wei.h"
+#include "peak_rss.h"
 
 namespace {
 
-double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux reports KiB
-}
+using pds_bench::peak_rss_mb;
 
 /// Runs `make(radius)` and reports samples/s, rho and memory. `density` is the
 /// method's N r^2 on the unit square (measured), so radius = sqrt(density / N).

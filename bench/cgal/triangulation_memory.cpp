@@ -2,8 +2,9 @@
 // and `fpo`): peak RSS of a CGAL Delaunay triangulation of N uniform points
 // in the unit square, plain and periodic, over what the points themselves
 // take, per point and as a multiple of the 16-byte 2D float64 sample. The
-// points are sorted along a Hilbert curve in place first and inserted one at
-// a time, each from the last one's face (as the samplers insert): the range
+// points are put in CGAL's spatial order in place first (CGAL::spatial_sort:
+// Hilbert curves over growing random prefixes) and inserted one at a time,
+// each from the last one's face, as the samplers insert: the range
 // constructors would add a sorted copy of the input to the peak. Run:
 //
 //   build/bench/pds_triangulation_memory [plain|periodic] [N]
@@ -18,23 +19,16 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <random>
 #include <string>
 #include <type_traits>
 #include <vector>
 
+#include "../peak_rss.h"
+
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-// A field of /proc/self/status in KiB (VmRSS: now; VmHWM: the peak).
-long status_kib(const std::string& key) {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.compare(0, key.size(), key) == 0) return std::stol(line.substr(key.size()));
-  return -1;
-}
 
 }  // namespace
 
@@ -51,7 +45,9 @@ int main(int argc, char** argv) {
   points.reserve(static_cast<std::size_t>(count));
   for (long i = 0; i < count; ++i) points.emplace_back(unit(rng), unit(rng));
   CGAL::spatial_sort(points.begin(), points.end());
-  const long before = status_kib("VmRSS:");
+  // The points are the peak so far: their vector grew once (reserved), and
+  // the sort works in place.
+  const double before = pds_bench::peak_rss_mb();
   // Inserted one at a time, each from the face of the one before.
   const auto fill = [&](auto& triangulation) {
     typename std::remove_reference_t<decltype(triangulation)>::Face_handle hint;
@@ -67,7 +63,7 @@ int main(int argc, char** argv) {
     CGAL::Periodic_2_Delaunay_triangulation_2<Traits> triangulation;
     vertices = fill(triangulation);
   }
-  const double growth = (status_kib("VmHWM:") - before) * 1024.0;
+  const double growth = (pds_bench::peak_rss_mb() - before) * 1024.0 * 1024.0;
   std::printf(
       "%s triangulation, %zu vertices: %.1f MB over the points, %.0f bytes a point, %.1fx a 2D float64 sample\n",
       kind.c_str(), vertices, growth / 1e6, growth / count, growth / count / 16.0);
