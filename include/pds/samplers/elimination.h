@@ -58,13 +58,12 @@ struct EliminationParams {
   /// below (which stay), moves its new points apart to min_rho (below N, from
   /// 2D on, to min_rho - 0.02; with every level at min_rho about three
   /// quarters of them moved: most output points are not candidates) and
-  /// appends them farthest first. Measured
-  /// (2D torus): prefixes at 1% steps at rho >= ~0.665 (0.67 from 10^5
-  /// points; from 32 points on >= ~0.655), where the halvings' fall
-  /// to ~0.60; the full set at 0.72 as with the halvings but with a lower
-  /// spectral peak; about twice the time (docs/elimination.md). Ignored,
-  /// like min_rho, by the overload with a density or mask. False: the
-  /// halvings.
+  /// appends them farthest first. Measured (2D torus): prefixes at 1% steps
+  /// at rho >= ~0.665 (0.67 from 10^5 points; from 32 points on >= ~0.655),
+  /// where the halvings' fall to ~0.60; the full set at 0.72 as with the
+  /// halvings but with a lower spectral peak; about twice the time
+  /// (docs/elimination.md). Ignored, like min_rho, by the overload with a
+  /// density or mask. False: the halvings.
   bool levels = false;
   /// Optional progress (candidates removed, over every round) and
   /// cancellation (pds/progress.h).
